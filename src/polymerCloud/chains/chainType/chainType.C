@@ -1,0 +1,111 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "chainType.H"
+#include "checkedInput.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::scalar Foam::chainType::boltzmannConstant = 1.380649e-23;
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::chainType::chainType(const word& name, const dictionary& dict)
+:
+    name_(name),
+    nBeads_
+    (
+        checkedInput::labelAtLeast(dict, "nBeads", 2, "<beads per chain>")
+    ),
+    rodLength_
+    (
+        checkedInput::positiveScalar(dict, "rodLength", "<rod length a>")
+    ),
+    beadMass_
+    (
+        checkedInput::positiveScalar(dict, "beadMass", "<bead mass m>")
+    ),
+    friction_
+    (
+        checkedInput::positiveScalar
+        (
+            dict, "friction", "<bead friction coefficient zeta>"
+        )
+    ),
+    kT_(0),
+    ring_(dict.getOrDefault<bool>("ring", false))
+{
+    const bool hasKT = dict.found("kT", keyType::LITERAL);
+    const bool hasT = dict.found("temperature", keyType::LITERAL);
+
+    if (hasKT == hasT)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Chain type '" << name_ << "' in " << dict.name()
+            << " needs exactly one of the keywords 'kT' or 'temperature'"
+            << nl
+            << "    expected: kT <thermal energy>; or temperature <T in K>;"
+            << exit(FatalIOError);
+    }
+
+    kT_ =
+        hasKT
+      ? checkedInput::positiveScalar(dict, "kT", "<thermal energy kT>")
+      : boltzmannConstant
+       *checkedInput::positiveScalar(dict, "temperature", "<T in K>");
+
+    if (ring_ && nBeads_ < 3)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword 'nBeads' in " << dict.name() << " is " << nBeads_
+            << " for a ring" << nl
+            << "    expected: nBeads <integer >= 3>; when ring is true"
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::chainType::chainType
+(
+    const word& name,
+    const label nBeads,
+    const scalar rodLength,
+    const scalar beadMass,
+    const scalar friction,
+    const scalar kT,
+    const bool ring
+)
+:
+    name_(name),
+    nBeads_(nBeads),
+    rodLength_(rodLength),
+    beadMass_(beadMass),
+    friction_(friction),
+    kT_(kT),
+    ring_(ring)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::chainType::writeSummary(Ostream& os) const
+{
+    os  << name_ << ": " << (ring_ ? "ring" : "open chain") << " of "
+        << nBeads_ << " beads, a " << rodLength_ << ", m " << beadMass_
+        << ", zeta " << friction_ << ", kT " << kT_
+        << " (m/zeta " << inertialTime()
+        << ", zeta a^2/4kT " << rodRelaxationTime() << ')';
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,140 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "polymerChains.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::polymerChains::polymerChains(const PtrList<chainType>& types)
+:
+    types_(types),
+    positions_(),
+    velocities_(),
+    chainStart_(1, Zero),
+    chainTypeIndex_(),
+    globalChainId_()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::polymerChains::append
+(
+    const label typeIndex,
+    const label globalId,
+    const UList<vector>& positions,
+    const UList<vector>& velocities
+)
+{
+    if
+    (
+        positions.size() != types_[typeIndex].nBeads()
+     || velocities.size() != positions.size()
+    )
+    {
+        FatalErrorInFunction
+            << "Chain " << globalId << " of type "
+            << types_[typeIndex].name() << " has " << positions.size()
+            << " positions and " << velocities.size()
+            << " velocities; expected " << types_[typeIndex].nBeads()
+            << abort(FatalError);
+    }
+
+    positions_.append(positions);
+    velocities_.append(velocities);
+    chainTypeIndex_.append(typeIndex);
+    globalChainId_.append(globalId);
+    chainStart_.append(positions_.size());
+}
+
+
+void Foam::polymerChains::clear()
+{
+    positions_.clear();
+    velocities_.clear();
+    chainStart_.resize(1);
+    chainTypeIndex_.clear();
+    globalChainId_.clear();
+}
+
+
+Foam::scalar Foam::polymerChains::maxRodLengthError(const label chaini) const
+{
+    const chainType& t = type(chaini);
+    const vector* x = positions_.cdata() + start(chaini);
+    const label n = t.nBeads();
+
+    scalar maxError = 0;
+    for (label k = 0; k < t.nRods(); ++k)
+    {
+        const scalar length = mag(x[(k + 1) % n] - x[k]);
+        maxError = max(maxError, mag(length - t.rodLength()));
+    }
+
+    return maxError/t.rodLength();
+}
+
+
+Foam::scalar Foam::polymerChains::maxRodLengthError() const
+{
+    scalar maxError = 0;
+    for (label c = 0; c < nChains(); ++c)
+    {
+        maxError = max(maxError, maxRodLengthError(c));
+    }
+    return maxError;
+}
+
+
+Foam::vector Foam::polymerChains::centreOfMass(const label chaini) const
+{
+    vector sum(Zero);
+    for (label i = start(chaini); i < end(chaini); ++i)
+    {
+        sum += positions_[i];
+    }
+    return sum/size(chaini);
+}
+
+
+Foam::scalar
+Foam::polymerChains::radiusOfGyrationSqr(const label chaini) const
+{
+    const vector centre = centreOfMass(chaini);
+
+    scalar sum = 0;
+    for (label i = start(chaini); i < end(chaini); ++i)
+    {
+        sum += magSqr(positions_[i] - centre);
+    }
+    return sum/size(chaini);
+}
+
+
+Foam::scalar Foam::polymerChains::endToEndSqr(const label chaini) const
+{
+    return magSqr(positions_[end(chaini) - 1] - positions_[start(chaini)]);
+}
+
+
+Foam::scalar Foam::polymerChains::kineticEnergy(const label chaini) const
+{
+    scalar sum = 0;
+    for (label i = start(chaini); i < end(chaini); ++i)
+    {
+        sum += magSqr(velocities_[i]);
+    }
+    return 0.5*type(chaini).beadMass()*sum;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,431 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "polymerCloud.H"
+#include "initialisationModel.H"
+#include "chainNoise.H"
+#include "checkedInput.H"
+#include "cpuTime.H"
+#include "HashTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(polymerCloud, 0);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::polymerCloud::readChainTypes()
+{
+    const dictionary& typesDict = checkedInput::subDict
+    (
+        properties_,
+        "chainTypes",
+        "<name> { nBeads <N>; rodLength <a>; beadMass <m>; friction <zeta>;"
+        " kT <kT>; } ..."
+    );
+
+    for (const entry& e : typesDict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(typesDict)
+                << "Entry '" << e.keyword() << "' in " << typesDict.name()
+                << " is not a dictionary" << nl
+                << "    expected: " << e.keyword() << " { nBeads <N>;"
+                << " rodLength <a>; beadMass <m>; friction <zeta>; kT <kT>; }"
+                << exit(FatalIOError);
+        }
+        types_.append(new chainType(e.keyword(), e.dict()));
+    }
+
+    if (types_.empty())
+    {
+        FatalIOErrorInFunction(typesDict)
+            << "No chain types in " << typesDict.name() << nl
+            << "    expected: <name> { nBeads <N>; rodLength <a>; ... }"
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::polymerCloud::readCloudFunctions()
+{
+    const dictionary* dictPtr =
+        properties_.findDict("cloudFunctions", keyType::LITERAL);
+
+    if (!dictPtr)
+    {
+        return;
+    }
+
+    for (const entry& e : *dictPtr)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(*dictPtr)
+                << "Entry '" << e.keyword() << "' in " << dictPtr->name()
+                << " is not a dictionary" << nl
+                << "    expected: " << e.keyword() << " { type <function>; }"
+                << exit(FatalIOError);
+        }
+        functions_.append
+        (
+            polymerCloudFunction::New(e.keyword(), e.dict(), *this)
+        );
+    }
+}
+
+
+void Foam::polymerCloud::initialise()
+{
+    const dictionary& subModels = properties_.subDict("subModels");
+
+    autoPtr<initialisationModel> initialisation
+    (
+        initialisationModel::New(subModels, mesh_)
+    );
+
+    // One owner per chain: the master creates them all
+    if (Pstream::master())
+    {
+        initialisation->create(chains_, seed_);
+    }
+
+    checkRods(properties_.dictionary::name()/"subModels"/"initialisation");
+    setThermalVelocities();
+}
+
+
+void Foam::polymerCloud::setThermalVelocities()
+{
+    List<vector>& v = chains_.velocities();
+
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const chainType& type = chains_.type(c);
+        const scalar thermalSpeed = std::sqrt(type.kT()/type.beadMass());
+        const chainNoise noise(seed_, chains_.globalId(c));
+
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        {
+            scalar xi[4];
+            noise.normals
+            (
+                0,
+                i - chains_.start(c),
+                chainNoise::setUpStream + 1,
+                xi
+            );
+            v[i] = thermalSpeed*vector(xi[0], xi[1], xi[2]);
+        }
+    }
+
+    constraint_->correctVelocities(chains_, mesh_.time().value());
+    accumulateCounters();
+}
+
+
+void Foam::polymerCloud::checkRods(const fileName& origin) const
+{
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const scalar error = chains_.maxRodLengthError(c);
+
+        if (error > rodLengthCheck_)
+        {
+            FatalIOErrorInFunction(properties_)
+                << "Chain " << chains_.globalId(c) << " ("
+                << chains_.type(c).name() << ") from " << origin
+                << " has a rod whose length differs from rodLength "
+                << chains_.type(c).rodLength() << " by a relative " << error
+                << nl << "    expected: every rod of length rodLength to a"
+                << " relative " << rodLengthCheck_
+                << " (solution { rodLengthCheck <tolerance>; })"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::polymerCloud::accumulateCounters()
+{
+    const constraintCounters& step = constraint_->count();
+
+    for (constraintCounters* sum : {&intervalCounters_, &totalCounters_})
+    {
+        sum->solves += step.solves;
+        sum->iterations += step.iterations;
+        sum->maxIterations = max(sum->maxIterations, step.maxIterations);
+        sum->failures += step.failures;
+    }
+
+    constraint_->resetCounters();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::polymerCloud::polymerCloud
+(
+    const word& cloudName,
+    const fvMesh& mesh
+)
+:
+    polymerCloud
+    (
+        cloudName,
+        mesh,
+        IOdictionary
+        (
+            IOobject
+            (
+                cloudName + "Properties",
+                mesh.time().constant(),
+                mesh,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        )
+    )
+{}
+
+
+Foam::polymerCloud::polymerCloud
+(
+    const word& cloudName,
+    const fvMesh& mesh,
+    const dictionary& properties
+)
+:
+    cloud(mesh, cloudName),
+    mesh_(mesh),
+    properties_
+    (
+        IOobject
+        (
+            cloudName + "Properties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        properties
+    ),
+    active_
+    (
+        properties_.optionalSubDict("solution")
+       .getOrDefault<bool>("active", true)
+    ),
+    seed_
+    (
+        properties_.optionalSubDict("solution")
+       .getOrDefault<label>("seed", 1)
+    ),
+    rodLengthCheck_
+    (
+        checkedInput::positiveScalarOrDefault
+        (
+            properties_.optionalSubDict("solution"),
+            "rodLengthCheck",
+            1e-6,
+            "<relative rod-length mismatch accepted at start>"
+        )
+    ),
+    types_(),
+    chains_(types_),
+    positionsOld_(),
+    flow_(),
+    integration_(),
+    constraint_(),
+    collision_(),
+    wall_(),
+    functions_(),
+    intervalCounters_(),
+    totalCounters_(),
+    evolveSeconds_(0),
+    beadSteps_(0)
+{
+    // Keep the file's name for messages when given a dictionary read from it
+    if (!properties.name().empty())
+    {
+        properties_.dictionary::name() = properties.name();
+    }
+
+    readChainTypes();
+
+    const dictionary& subModels = checkedInput::subDict
+    (
+        properties_,
+        "subModels",
+        "integration <model>; constraint <model>; collision <model>;"
+        " wall <model>; flow <model>; initialisation <model>; ..."
+    );
+
+    flow_ = flowModel::New(subModels, mesh_);
+    integration_ = integrationModel::New(subModels);
+    constraint_ = constraintModel::New(subModels);
+    collision_ = collisionModel::New(subModels);
+    wall_ = wallModel::New(subModels);
+
+    if (Pstream::parRun() && flow_->solvesFlow())
+    {
+        FatalIOErrorInFunction(subModels)
+            << "flow " << flow_->type() << " in " << subModels.name()
+            << " runs serially in this version: beads on other processors"
+            << " would not see their fluid velocity" << nl
+            << "    expected: a serial run, or flow none or prescribed"
+            << exit(FatalIOError);
+    }
+
+    if (savedCloudExists())
+    {
+        readChains();
+    }
+    else
+    {
+        initialise();
+    }
+
+    readCloudFunctions();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::polymerCloud::nBeadsOutside() const
+{
+    return returnReduce(flow_->nBeadsOutside(), sumOp<label>());
+}
+
+
+Foam::label Foam::polymerCloud::nParcels() const
+{
+    return returnReduce(chains_.nBeads(), sumOp<label>());
+}
+
+
+void Foam::polymerCloud::evolve()
+{
+    if (!active_)
+    {
+        return;
+    }
+
+    cpuTime timer;
+
+    const Time& runTime = mesh_.time();
+    const scalar deltaT = runTime.deltaTValue();
+    const scalar time = runTime.value();
+
+    positionsOld_ = chains_.positions();
+
+    // 1. Unconstrained update in the fluid velocity at x^n
+    flow_->update(chains_);
+    integration_->integrate
+    (
+        chains_,
+        flow_->beadVelocity(),
+        deltaT,
+        runTime.timeIndex(),
+        seed_
+    );
+
+    // 2. Rod lengths and rod velocities
+    constraint_->correct(chains_, positionsOld_, deltaT, time);
+    accumulateCounters();
+
+    // 3. Rod-rod collisions and bead-wall impacts
+    collision_->correct(chains_, positionsOld_, deltaT, time);
+    wall_->correct(chains_, positionsOld_, deltaT, time);
+
+    evolveSeconds_ += timer.cpuTimeIncrement();
+    beadSteps_ += chains_.nBeads();
+
+    for (polymerCloudFunction& function : functions_)
+    {
+        function.postEvolve();
+    }
+}
+
+
+void Foam::polymerCloud::writeSummary(Ostream& os) const
+{
+    // Chains per type, over all processors
+    labelList nChainsOfType(types_.size(), Zero);
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        ++nChainsOfType[chains_.typeIndex(c)];
+    }
+    Pstream::listCombineGather(nChainsOfType, plusEqOp<label>());
+
+    os  << name() << ':';
+    label nListed = 0;
+    forAll(types_, typei)
+    {
+        if (nChainsOfType[typei])
+        {
+            os  << (nListed++ ? " +" : "") << ' ' << nChainsOfType[typei]
+                << (types_[typei].ring() ? " ring" : " chain")
+                << (nChainsOfType[typei] > 1 ? "s" : "") << " x "
+                << types_[typei].nBeads() << " beads";
+        }
+    }
+    if (!nListed)
+    {
+        os  << " no chains";
+    }
+
+    os  << "; integration " << integration_->type()
+        << "; constraint " << constraint_->type()
+        << "; collision " << collision_->type()
+        << "; wall " << wall_->type()
+        << "; flow " << flow_->type()
+        << (active_ ? "" : " (inactive)") << nl;
+
+    forAll(types_, typei)
+    {
+        os  << "    ";
+        types_[typei].writeSummary(os);
+        os  << nl;
+    }
+}
+
+
+void Foam::polymerCloud::writeReport(Ostream& os) const
+{
+    const scalar seconds = returnReduce(evolveSeconds_, maxOp<scalar>());
+    const scalar beadSteps = returnReduce(beadSteps_, sumOp<scalar>());
+
+    os  << name() << ": " << beadSteps << " bead-steps in " << seconds
+        << " s of cloud evolution";
+    if (seconds > 0)
+    {
+        os  << ", " << beadSteps/seconds << " bead-steps/s";
+    }
+    os  << nl
+        << "    constraint solves " << totalCounters_.solves
+        << ", iterations per solve "
+        << scalar(totalCounters_.iterations)/max(totalCounters_.solves, 1)
+        << " (max " << totalCounters_.maxIterations << ")"
+        << ", failures " << totalCounters_.failures << nl
+        << "    beads " << nParcels() << ", outside the mesh "
+        << nBeadsOutside() << nl;
+}
+
+
+// ************************************************************************* //

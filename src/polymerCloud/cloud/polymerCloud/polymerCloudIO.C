@@ -1,0 +1,250 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+Description
+    Reading and writing the chains in the time directories:
+    lagrangian/<cloud>/positions (OpenFOAM's v1706 positions format, which
+    ParaView's OpenFOAM reader shows as points), U, chainId, bead and
+    chainType (index into chainTypes). Positions and velocities are written
+    with 17 significant digits so that a restart continues bit for bit.
+
+\*---------------------------------------------------------------------------*/
+
+#include "polymerCloud.H"
+#include "IOField.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+Foam::IOobject Foam::polymerCloud::fieldIOobject
+(
+    const word& fieldName,
+    const IOobject::readOption r
+) const
+{
+    return IOobject
+    (
+        fieldName,
+        mesh_.time().timeName(),
+        *this,
+        r,
+        IOobject::NO_WRITE,
+        false
+    );
+}
+
+
+bool Foam::polymerCloud::savedCloudExists() const
+{
+    return isFile(fieldIOobject("positions", IOobject::NO_READ).objectPath());
+}
+
+
+Foam::List<Foam::point> Foam::polymerCloud::readPositions() const
+{
+    IOobject io(fieldIOobject("positions", IOobject::MUST_READ));
+    IFstream is(io.objectPath());
+
+    if (!is.good() || !io.readHeader(is))
+    {
+        FatalIOErrorInFunction(is)
+            << "Cannot read the header of " << io.objectPath()
+            << exit(FatalIOError);
+    }
+
+    const label n = readLabel(is);
+    List<point> positions(n);
+
+    is.readBegin("positions");
+    for (point& p : positions)
+    {
+        label celli;
+        is >> p >> celli;
+    }
+    is.readEnd("positions");
+
+    return positions;
+}
+
+
+void Foam::polymerCloud::readChains()
+{
+    const List<point> positions(readPositions());
+    const IOField<vector> U(fieldIOobject("U", IOobject::MUST_READ));
+    const IOField<label> chainId
+    (
+        fieldIOobject("chainId", IOobject::MUST_READ)
+    );
+    const IOField<label> bead(fieldIOobject("bead", IOobject::MUST_READ));
+    const IOField<label> typeIndex
+    (
+        fieldIOobject("chainType", IOobject::MUST_READ)
+    );
+
+    const label n = positions.size();
+    if (U.size() != n || chainId.size() != n || bead.size() != n
+     || typeIndex.size() != n)
+    {
+        FatalIOErrorInFunction(properties_)
+            << "The saved cloud in " << U.path() << " has fields of"
+            << " different sizes: positions " << n << ", U " << U.size()
+            << ", chainId " << chainId.size() << ", bead " << bead.size()
+            << ", chainType " << typeIndex.size()
+            << exit(FatalIOError);
+    }
+
+    // Beads of a chain are consecutive, in bead order
+    for (label first = 0; first < n; )
+    {
+        const label typei = typeIndex[first];
+        if (typei < 0 || typei >= types_.size())
+        {
+            FatalIOErrorInFunction(properties_)
+                << "Bead " << first << " in " << U.path() << " has chainType "
+                << typei << nl << "    expected: an index into chainTypes"
+                << " (0 to " << types_.size() - 1 << ")"
+                << exit(FatalIOError);
+        }
+
+        const label size = types_[typei].nBeads();
+        for (label k = 0; k < size; ++k)
+        {
+            const label i = first + k;
+            if
+            (
+                i >= n || bead[i] != k || chainId[i] != chainId[first]
+             || typeIndex[i] != typei
+            )
+            {
+                FatalIOErrorInFunction(properties_)
+                    << "Chain " << chainId[first] << " in " << U.path()
+                    << " is not a run of " << size << " beads numbered 0 to "
+                    << size - 1 << " (type " << types_[typei].name() << ")"
+                    << exit(FatalIOError);
+            }
+        }
+
+        chains_.append
+        (
+            typei,
+            chainId[first],
+            SubList<point>(positions, size, first),
+            SubList<vector>(U, size, first)
+        );
+        first += size;
+    }
+
+    checkRods(U.path());
+}
+
+
+void Foam::polymerCloud::writePositions() const
+{
+    const IOobject io(fieldIOobject("positions", IOobject::NO_READ));
+    mkDir(io.path());
+
+    OFstream os(io.objectPath());
+    io.writeHeader(os, "Cloud<passiveParticle>");
+
+    const List<vector>& x = chains_.positions();
+
+    // The host cell is informative only; chains need not be in the mesh
+    os  << x.size() << nl << token::BEGIN_LIST << nl;
+    for (const point& p : x)
+    {
+        os  << p << token::SPACE << mesh_.findCell(p) << nl;
+    }
+    os  << token::END_LIST << nl;
+
+    IOobject::writeEndDivider(os);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::polymerCloud::writeObject
+(
+    IOstream::streamFormat fmt,
+    IOstream::versionNumber ver,
+    IOstream::compressionType cmp,
+    const bool valid
+) const
+{
+    const unsigned int oldPrecision =
+        IOstream::defaultPrecision(max(17u, IOstream::defaultPrecision()));
+
+    writePositions();
+
+    const label n = chains_.nBeads();
+    IOField<vector> U
+    (
+        fieldIOobject("U", IOobject::NO_READ),
+        chains_.velocities()
+    );
+    IOField<label> chainId(fieldIOobject("chainId", IOobject::NO_READ), n);
+    IOField<label> bead(fieldIOobject("bead", IOobject::NO_READ), n);
+    IOField<label> typeIndex
+    (
+        fieldIOobject("chainType", IOobject::NO_READ),
+        n
+    );
+
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        {
+            chainId[i] = chains_.globalId(c);
+            bead[i] = i - chains_.start(c);
+            typeIndex[i] = chains_.typeIndex(c);
+        }
+    }
+
+    const bool ok =
+        U.writeObject(fmt, ver, cmp, true)
+     && chainId.writeObject(fmt, ver, cmp, true)
+     && bead.writeObject(fmt, ver, cmp, true)
+     && typeIndex.writeObject(fmt, ver, cmp, true);
+
+    IOstream::defaultPrecision(oldPrecision);
+
+    for (polymerCloudFunction& function : functions_)
+    {
+        function.write();
+    }
+
+    return ok && cloud::writeObject(fmt, ver, cmp, valid);
+}
+
+
+void Foam::polymerCloud::writeObjects(objectRegistry& obr) const
+{
+    IOField<point>& position =
+        cloud::createIOField<point>("position", chains_.nBeads(), obr);
+    position = chains_.positions();
+
+    IOField<vector>& U =
+        cloud::createIOField<vector>("U", chains_.nBeads(), obr);
+    U = chains_.velocities();
+
+    IOField<label>& chainId =
+        cloud::createIOField<label>("chainId", chains_.nBeads(), obr);
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        {
+            chainId[i] = chains_.globalId(c);
+        }
+    }
+}
+
+
+// ************************************************************************* //

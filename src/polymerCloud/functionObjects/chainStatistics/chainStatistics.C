@@ -1,0 +1,157 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "chainStatistics.H"
+#include "polymerCloud.H"
+#include "checkedInput.H"
+#include "OSspecific.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace cloudFunctions
+{
+    defineTypeNameAndDebug(chainStatistics, 0);
+    addToRunTimeSelectionTable
+    (
+        polymerCloudFunction,
+        chainStatistics,
+        dictionary
+    );
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::cloudFunctions::chainStatistics::openFile()
+{
+    const Time& runTime = cloud_.mesh().time();
+    const fileName dir
+    (
+        runTime.globalPath()/"postProcessing"/cloud_.name()
+       /runTime.timeName()
+    );
+    mkDir(dir);
+
+    file_.reset(new OFstream(dir/"statistics.dat"));
+    file_().precision(10);
+
+    file_()
+        << "# polymerCloud " << cloud_.name() << " statistics" << nl
+        << "# time nChains Rg2 Ree2 kTkinetic kT rodError iterMean iterMax"
+        << " failures outside" << endl;
+}
+
+
+void Foam::cloudFunctions::chainStatistics::writeLine()
+{
+    const polymerChains& chains = cloud_.chains();
+
+    scalar sumRg2 = 0;
+    scalar sumRee2 = 0;
+    label nOpen = 0;
+    scalar twiceKinetic = 0;
+    scalar dof = 0;
+    scalar dofKT = 0;
+    scalar rodError = 0;
+
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        const chainType& type = chains.type(c);
+        sumRg2 += chains.radiusOfGyrationSqr(c);
+        if (!type.ring())
+        {
+            sumRee2 += chains.endToEndSqr(c);
+            ++nOpen;
+        }
+        twiceKinetic += 2*chains.kineticEnergy(c);
+        dof += type.degreesOfFreedom();
+        dofKT += type.degreesOfFreedom()*type.kT();
+        rodError = max(rodError, chains.maxRodLengthError(c));
+    }
+
+    label nChains = chains.nChains();
+    reduce(nChains, sumOp<label>());
+    reduce(nOpen, sumOp<label>());
+    reduce(sumRg2, sumOp<scalar>());
+    reduce(sumRee2, sumOp<scalar>());
+    reduce(twiceKinetic, sumOp<scalar>());
+    reduce(dof, sumOp<scalar>());
+    reduce(dofKT, sumOp<scalar>());
+    reduce(rodError, maxOp<scalar>());
+
+    const polymerCloud::constraintCounters& interval =
+        cloud_.intervalCounters();
+
+    if (Pstream::master())
+    {
+        file_()
+            << cloud_.mesh().time().value() << ' '
+            << nChains << ' '
+            << sumRg2/max(nChains, 1) << ' '
+            << sumRee2/max(nOpen, 1) << ' '
+            << twiceKinetic/max(dof, scalar(1)) << ' '
+            << dofKT/max(dof, scalar(1)) << ' '
+            << rodError << ' '
+            << scalar(interval.iterations)/max(interval.solves, 1) << ' '
+            << interval.maxIterations << ' '
+            << cloud_.totalCounters().failures << ' '
+            << cloud_.nBeadsOutside() << endl;
+    }
+
+    cloud_.resetIntervalCounters();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cloudFunctions::chainStatistics::chainStatistics
+(
+    const word& name,
+    const dictionary& dict,
+    const polymerCloud& cloud
+)
+:
+    polymerCloudFunction(name, cloud),
+    interval_
+    (
+        checkedInput::labelAtLeastOrDefault
+        (
+            dict, "interval", 1, 1, "<time steps between lines>"
+        )
+    ),
+    stepsSinceLine_(0),
+    file_()
+{
+    if (Pstream::master())
+    {
+        openFile();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cloudFunctions::chainStatistics::postEvolve()
+{
+    if (++stepsSinceLine_ >= interval_)
+    {
+        stepsSinceLine_ = 0;
+        writeLine();
+    }
+}
+
+
+// ************************************************************************* //

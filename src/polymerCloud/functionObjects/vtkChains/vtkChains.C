@@ -1,0 +1,201 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "vtkChains.H"
+#include "polymerCloud.H"
+#include "foamVtkOutput.H"
+#include "OSspecific.H"
+#include "addToRunTimeSelectionTable.H"
+
+#include <fstream>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace cloudFunctions
+{
+    defineTypeNameAndDebug(vtkChains, 0);
+    addToRunTimeSelectionTable(polymerCloudFunction, vtkChains, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::cloudFunctions::vtkChains::writeLines
+(
+    vtk::formatter& format
+) const
+{
+    const polymerChains& chains = cloud_.chains();
+
+    // A ring repeats its first bead to close the line
+    labelList connectivity(chains.nBeads() + chains.nChains());
+    labelList offsets(chains.nChains());
+    label n = 0;
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        for (label i = chains.start(c); i < chains.end(c); ++i)
+        {
+            connectivity[n++] = i;
+        }
+        if (chains.type(c).ring())
+        {
+            connectivity[n++] = chains.start(c);
+        }
+        offsets[c] = n;
+    }
+    connectivity.setSize(n);
+
+    format.tag(vtk::fileTag::LINES);
+
+    format.beginDataArray<label>(vtk::dataArrayAttr::CONNECTIVITY);
+    format.writeSize(vtk::sizeofData<label>(connectivity.size()));
+    vtk::writeList(format, connectivity);
+    format.flush();
+    format.endDataArray();
+
+    format.beginDataArray<label>(vtk::dataArrayAttr::OFFSETS);
+    format.writeSize(vtk::sizeofData<label>(offsets.size()));
+    vtk::writeList(format, offsets);
+    format.flush();
+    format.endDataArray();
+
+    format.endTag(vtk::fileTag::LINES);
+}
+
+
+void Foam::cloudFunctions::vtkChains::writeFile(const fileName& file) const
+{
+    const polymerChains& chains = cloud_.chains();
+    const Time& runTime = cloud_.mesh().time();
+    const label nBeads = chains.nBeads();
+
+    std::ofstream os(file);
+    autoPtr<vtk::formatter> format = writeOpts_.newFormatter(os);
+
+    format()
+        .xmlHeader()
+        .beginVTKFile<vtk::fileTag::POLY_DATA>()
+        .beginFieldData()
+        .writeTimeValue(runTime.value())
+        .endFieldData()
+        .tag
+        (
+            vtk::fileTag::PIECE,
+            vtk::fileAttr::NUMBER_OF_POINTS, nBeads,
+            vtk::fileAttr::NUMBER_OF_LINES, chains.nChains()
+        );
+
+    format().tag(vtk::fileTag::POINTS)
+        .beginDataArray<float, 3>(vtk::dataArrayAttr::POINTS);
+    format().writeSize(vtk::sizeofData<float, 3>(nBeads));
+    vtk::writeList(format(), chains.positions());
+    format().flush();
+    format().endDataArray();
+    format().endTag(vtk::fileTag::POINTS);
+
+    writeLines(format());
+
+    labelList chainId(nBeads);
+    labelList bead(nBeads);
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        for (label i = chains.start(c); i < chains.end(c); ++i)
+        {
+            chainId[i] = chains.globalId(c);
+            bead[i] = i - chains.start(c);
+        }
+    }
+
+    format().beginPointData();
+
+    format().beginDataArray<label>("chainId");
+    format().writeSize(vtk::sizeofData<label>(nBeads));
+    vtk::writeList(format(), chainId);
+    format().flush();
+    format().endDataArray();
+
+    format().beginDataArray<label>("bead");
+    format().writeSize(vtk::sizeofData<label>(nBeads));
+    vtk::writeList(format(), bead);
+    format().flush();
+    format().endDataArray();
+
+    format().beginDataArray<float, 3>("U");
+    format().writeSize(vtk::sizeofData<float, 3>(nBeads));
+    vtk::writeList(format(), chains.velocities());
+    format().flush();
+    format().endDataArray();
+
+    format().endPointData();
+
+    format().endPiece();
+    format().endTag(vtk::fileTag::POLY_DATA).endVTKFile();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cloudFunctions::vtkChains::vtkChains
+(
+    const word& name,
+    const dictionary& dict,
+    const polymerCloud& cloud
+)
+:
+    polymerCloudFunction(name, cloud),
+    writeOpts_(vtk::formatType::INLINE_BASE64),
+    series_()
+{
+    if (IOstream::formatEnum(dict.getOrDefault<word>("format", "binary"))
+     == IOstream::ASCII)
+    {
+        writeOpts_.ascii(true);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cloudFunctions::vtkChains::write()
+{
+    // The master owns every chain (see polymerCloud)
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    const Time& runTime = cloud_.mesh().time();
+
+    const fileName dir(runTime.globalPath()/"VTK"/cloud_.name());
+    mkDir(dir);
+
+    const fileName file
+    (
+        dir/cloud_.name() + "_" + Foam::name(runTime.timeIndex()) + ".vtp"
+    );
+
+    writeFile(file);
+
+    const fileName seriesName(vtk::seriesWriter::base(file));
+    if (series_.empty())
+    {
+        series_.load(seriesName, true, runTime.value());
+    }
+    series_.append(runTime.value(), file);
+    series_.write(seriesName);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,171 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "checkedInput.H"
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * * //
+
+namespace
+{
+
+void missing
+(
+    const Foam::dictionary& dict,
+    const Foam::word& keyword,
+    const Foam::string& meaning
+)
+{
+    using namespace Foam;
+    FatalIOErrorInFunction(dict)
+        << "Missing keyword '" << keyword << "' in " << dict.name() << nl
+        << "    expected: " << keyword << ' ' << meaning.c_str() << ';'
+        << exit(FatalIOError);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Functions  * * * * * * * * * * * * * * * //
+
+Foam::scalar Foam::checkedInput::positiveScalar
+(
+    const dictionary& dict,
+    const word& keyword,
+    const string& meaning
+)
+{
+    if (!dict.found(keyword, keyType::LITERAL))
+    {
+        missing(dict, keyword, meaning);
+    }
+
+    const scalar value = dict.get<scalar>(keyword, keyType::LITERAL);
+
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << keyword << "' in " << dict.name()
+            << " is " << value << nl
+            << "    expected: " << keyword << ' ' << meaning.c_str()
+            << "; a number > 0"
+            << exit(FatalIOError);
+    }
+
+    return value;
+}
+
+
+Foam::scalar Foam::checkedInput::positiveScalarOrDefault
+(
+    const dictionary& dict,
+    const word& keyword,
+    const scalar deflt,
+    const string& meaning
+)
+{
+    if (!dict.found(keyword, keyType::LITERAL))
+    {
+        return deflt;
+    }
+
+    return positiveScalar(dict, keyword, meaning);
+}
+
+
+Foam::label Foam::checkedInput::labelAtLeast
+(
+    const dictionary& dict,
+    const word& keyword,
+    const label minValue,
+    const string& meaning
+)
+{
+    if (!dict.found(keyword, keyType::LITERAL))
+    {
+        missing(dict, keyword, meaning);
+    }
+
+    const label value = dict.get<label>(keyword, keyType::LITERAL);
+
+    if (value < minValue)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Keyword '" << keyword << "' in " << dict.name()
+            << " is " << value << nl
+            << "    expected: " << keyword << ' ' << meaning.c_str()
+            << "; an integer >= " << minValue
+            << exit(FatalIOError);
+    }
+
+    return value;
+}
+
+
+Foam::label Foam::checkedInput::labelAtLeastOrDefault
+(
+    const dictionary& dict,
+    const word& keyword,
+    const label deflt,
+    const label minValue,
+    const string& meaning
+)
+{
+    if (!dict.found(keyword, keyType::LITERAL))
+    {
+        return deflt;
+    }
+
+    return labelAtLeast(dict, keyword, minValue, meaning);
+}
+
+
+Foam::word Foam::checkedInput::modelType
+(
+    const dictionary& dict,
+    const word& keyword,
+    const wordList& validNames
+)
+{
+    if (!dict.found(keyword, keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Missing keyword '" << keyword << "' in " << dict.name() << nl
+            << "    expected: " << keyword << " <model>; with <model> one of "
+            << validNames
+            << exit(FatalIOError);
+    }
+
+    return dict.get<word>(keyword, keyType::LITERAL);
+}
+
+
+const Foam::dictionary& Foam::checkedInput::subDict
+(
+    const dictionary& dict,
+    const word& keyword,
+    const string& meaning
+)
+{
+    if (!dict.isDict(keyword, keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Missing sub-dictionary '" << keyword << "' in "
+            << dict.name() << nl
+            << "    expected: " << keyword << " { " << meaning.c_str() << " }"
+            << exit(FatalIOError);
+    }
+
+    return dict.subDict(keyword);
+}
+
+
+// ************************************************************************* //

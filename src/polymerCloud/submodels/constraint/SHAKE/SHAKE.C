@@ -1,0 +1,178 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "SHAKE.H"
+#include "checkedInput.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace constraintModels
+{
+    defineTypeNameAndDebug(SHAKE, 0);
+    addToRunTimeSelectionTable(constraintModel, SHAKE, dictionary);
+}
+}
+
+const Foam::Enum<Foam::constraintModels::SHAKE::directionType>
+Foam::constraintModels::SHAKE::directionTypeNames
+({
+    { directionType::start, "start" },
+    { directionType::end, "end" },
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::constraintModels::SHAKE::SHAKE(const dictionary& dict)
+:
+    SHAKE(typeName, dict)
+{}
+
+
+Foam::constraintModels::SHAKE::SHAKE
+(
+    const word& type,
+    const dictionary& dict
+)
+:
+    constraintModel(type, dict),
+    tolerance_
+    (
+        checkedInput::positiveScalarOrDefault
+        (
+            coeffDict_, "tolerance", 1e-10, "<relative rod-length error>"
+        )
+    ),
+    maxIterations_
+    (
+        checkedInput::labelAtLeastOrDefault
+        (
+            coeffDict_, "maxIterations", 1000, 1, "<iteration cap>"
+        )
+    ),
+    directions_
+    (
+        directionTypeNames.getOrDefault
+        (
+            "directions", coeffDict_, directionType::start
+        )
+    ),
+    reference_()
+{}
+
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+Foam::label Foam::constraintModels::SHAKE::correctLengths
+(
+    polymerChains& chains,
+    const label chaini,
+    const vector* directionSource,
+    const scalar deltaT,
+    scalar& residual
+) const
+{
+    const chainType& type = chains.type(chaini);
+    const label first = chains.start(chaini);
+    const label n = type.nBeads();
+    const label nRods = type.nRods();
+    const scalar a2 = sqr(type.rodLength());
+
+    vector* x = chains.positions().data() + first;
+    vector* v = chains.velocities().data() + first;
+    const vector* rc = directionSource + first;
+
+    // |s.s - a^2|/(2 a^2) is the relative length error to first order
+    const scalar squaredTolerance = 2*a2*tolerance_;
+    const scalar oneByDeltaT = 1/deltaT;
+
+    for (label iter = 1; iter <= maxIterations_; ++iter)
+    {
+        bool converged = true;
+
+        for (label k = 0; k < nRods; ++k)
+        {
+            const label j = (k + 1 < n) ? k + 1 : 0;
+            const vector s = x[j] - x[k];
+            const scalar excess = a2 - (s & s);
+
+            if (mag(excess) > squaredTolerance)
+            {
+                converged = false;
+
+                const vector direction = rc[j] - rc[k];
+                const scalar alignment = s & direction;
+
+                if (alignment <= SMALL*a2)
+                {
+                    residual = mag(excess)/(2*a2);
+                    return -iter;
+                }
+
+                const vector shift = (excess/(4*alignment))*direction;
+                x[k] -= shift;
+                x[j] += shift;
+                v[k] -= oneByDeltaT*shift;
+                v[j] += oneByDeltaT*shift;
+            }
+        }
+
+        if (converged)
+        {
+            residual = 0;
+            return iter;
+        }
+    }
+
+    residual = chains.maxRodLengthError(chaini);
+    return -maxIterations_;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::constraintModels::SHAKE::correct
+(
+    polymerChains& chains,
+    const UList<vector>& positionsOld,
+    const scalar deltaT,
+    const scalar time
+) const
+{
+    const vector* directionSource = positionsOld.cdata();
+
+    if (directions_ == directionType::end)
+    {
+        reference_ = chains.positions();
+        directionSource = reference_.cdata();
+    }
+
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        scalar residual = 0;
+        const label iter =
+            correctLengths(chains, c, directionSource, deltaT, residual);
+
+        counters_.add(mag(iter), iter > 0);
+
+        if (iter < 0)
+        {
+            reportFailure(chains, c, "Rod-length", time, residual, -iter);
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,39 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "flowModel.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(flowModel, 0);
+    defineRunTimeSelectionTable(flowModel, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::flowModel::flowModel
+(
+    const word& type,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    coeffDict_(dict.optionalSubDict(type + "Coeffs")),
+    mesh_(mesh),
+    beadVelocity_()
+{}
+
+
+// ************************************************************************* //

@@ -1,0 +1,49 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "noFlow.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace flowModels
+{
+    defineTypeNameAndDebug(noFlow, 0);
+    addToRunTimeSelectionTable(flowModel, noFlow, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::flowModels::noFlow::noFlow(const dictionary& dict, const fvMesh& mesh)
+:
+    flowModel(typeName, dict, mesh)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::flowModels::noFlow::update(const polymerChains& chains)
+{
+    // The velocities stay zero: only a change of bead count costs anything
+    if (beadVelocity_.size() != chains.nBeads())
+    {
+        beadVelocity_.setSize(chains.nBeads());
+        beadVelocity_ = Zero;
+    }
+}
+
+
+// ************************************************************************* //

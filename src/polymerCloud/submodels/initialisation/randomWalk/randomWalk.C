@@ -1,0 +1,138 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "randomWalk.H"
+#include "chainNoise.H"
+#include "checkedInput.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace initialisationModels
+{
+    defineTypeNameAndDebug(randomWalk, 0);
+    addToRunTimeSelectionTable(initialisationModel, randomWalk, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::initialisationModels::randomWalk::randomWalk
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    initialisationModel(typeName, dict, mesh),
+    box_(coeffDict_.get<point>("min"), coeffDict_.get<point>("max"))
+{
+    if (!box_.valid())
+    {
+        FatalIOErrorInFunction(coeffDict_)
+            << "Keywords 'min' " << box_.min() << " and 'max' " << box_.max()
+            << " in " << coeffDict_.name() << " make an empty box" << nl
+            << "    expected: min (x y z); max (X Y Z); with X >= x, ..."
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::List<Foam::point> Foam::initialisationModels::randomWalk::walk
+(
+    const chainType& type,
+    const label seed,
+    const label globalId
+) const
+{
+    const chainNoise noise(seed, globalId);
+    List<point> x(type.nBeads());
+
+    scalar u[4];
+    noise.uniforms(0, 0, chainNoise::setUpStream, u);
+    x[0] = box_.min() + cmptMultiply(vector(u[0], u[1], u[2]), box_.span());
+
+    for (label i = 1; i < x.size(); ++i)
+    {
+        // A uniform direction: cos(theta) uniform in (-1, 1)
+        noise.uniforms(0, i, chainNoise::setUpStream, u);
+        const scalar cosTheta = 2*u[0] - 1;
+        const scalar sinTheta = std::sqrt(max(1 - sqr(cosTheta), scalar(0)));
+        const scalar phi = constant::mathematical::twoPi*u[1];
+
+        x[i] =
+            x[i - 1]
+          + type.rodLength()
+           *vector
+            (
+                sinTheta*std::cos(phi),
+                sinTheta*std::sin(phi),
+                cosTheta
+            );
+    }
+
+    return x;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::initialisationModels::randomWalk::create
+(
+    polymerChains& chains,
+    const label seed
+) const
+{
+    const dictionary& chainsDict = checkedInput::subDict
+    (
+        coeffDict_,
+        "chains",
+        "<chain type> <number of chains>; ..."
+    );
+
+    for (const entry& e : chainsDict)
+    {
+        const label typei =
+            findType(chains.types(), e.keyword(), chainsDict, e.keyword());
+        const chainType& type = chains.types()[typei];
+
+        if (type.ring())
+        {
+            FatalIOErrorInFunction(chainsDict)
+                << "Chain type '" << type.name() << "' in "
+                << chainsDict.name() << " is a ring" << nl
+                << "    expected: open chain types; random walks do not"
+                << " close (use the trefoil or file initialisation)"
+                << exit(FatalIOError);
+        }
+
+        const label number = checkedInput::labelAtLeast
+        (
+            chainsDict, e.keyword(), 0, "<number of chains>"
+        );
+
+        for (label n = 0; n < number; ++n)
+        {
+            const label globalId = chains.nChains();
+            const List<point> x = walk(type, seed, globalId);
+            chains.append(typei, globalId, x, List<vector>(x.size(), Zero));
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,74 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "eulerMaruyama.H"
+#include "chainNoise.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace integrationModels
+{
+    defineTypeNameAndDebug(eulerMaruyama, 0);
+    addToRunTimeSelectionTable(integrationModel, eulerMaruyama, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::integrationModels::eulerMaruyama::eulerMaruyama(const dictionary& dict)
+:
+    integrationModel(typeName, dict)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::integrationModels::eulerMaruyama::integrate
+(
+    polymerChains& chains,
+    const UList<vector>& fluidVelocity,
+    const scalar deltaT,
+    const label timeIndex,
+    const label seed
+) const
+{
+    vector* x = chains.positions().data();
+    vector* v = chains.velocities().data();
+    const vector* u = fluidVelocity.cdata();
+
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        const chainType& type = chains.type(c);
+        const scalar gammaDt = deltaT/type.inertialTime();
+        const scalar sigma =
+            std::sqrt(2*gammaDt*type.kT()/type.beadMass());
+
+        const chainNoise noise(seed, chains.globalId(c));
+        const label first = chains.start(c);
+
+        for (label i = first; i < chains.end(c); ++i)
+        {
+            scalar a[4];
+            noise.normals(timeIndex, i - first, chainNoise::stepStream0, a);
+
+            x[i] += v[i]*deltaT;
+            v[i] += -gammaDt*(v[i] - u[i]) + sigma*vector(a[0], a[1], a[2]);
+        }
+    }
+}
+
+
+// ************************************************************************* //

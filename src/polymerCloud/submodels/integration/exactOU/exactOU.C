@@ -1,0 +1,148 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "exactOU.H"
+#include "chainNoise.H"
+#include "addToRunTimeSelectionTable.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace integrationModels
+{
+    defineTypeNameAndDebug(exactOU, 0);
+    addToRunTimeSelectionTable(integrationModel, exactOU, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::scalar Foam::integrationModels::exactOU::positionVarianceFactor
+(
+    const scalar h
+)
+{
+    if (h >= 1)
+    {
+        return 2*h - 3 + 4*std::exp(-h) - std::exp(-2*h);
+    }
+
+    // The terms up to h^2 cancel exactly: sum the series from h^3,
+    //     sum_k (-1)^k (4 - 2^k) h^k/k!
+    scalar sum = 0;
+    scalar hPowerOverFactorial = h*h/2;
+    scalar twoPower = 4;
+    for (int k = 3; k < 40; ++k)
+    {
+        hPowerOverFactorial *= h/k;
+        twoPower *= 2;
+        const scalar term =
+            ((k % 2) ? -1 : 1)*(4 - twoPower)*hPowerOverFactorial;
+        sum += term;
+        if (mag(term) < 1e-18*mag(sum))
+        {
+            break;
+        }
+    }
+    return sum;
+}
+
+
+Foam::integrationModels::exactOU::coefficients
+Foam::integrationModels::exactOU::coefficients::exact
+(
+    const chainType& type,
+    const scalar dt
+)
+{
+    const scalar gamma = type.friction()/type.beadMass();
+    const scalar h = gamma*dt;
+    const scalar thermalVelocitySqr = type.kT()/type.beadMass();
+
+    const scalar oneMinusE = -std::expm1(-h);
+    const scalar varV = thermalVelocitySqr*(-std::expm1(-2*h));
+    const scalar varX =
+        thermalVelocitySqr/sqr(gamma)*positionVarianceFactor(h);
+    const scalar covXV = thermalVelocitySqr/gamma*sqr(oneMinusE);
+
+    coefficients c;
+    c.velocityDecay = std::exp(-h);
+    c.positionDecay = oneMinusE/gamma;
+    c.velocitySigma = std::sqrt(varV);
+    c.positionFromXi1 = varV > 0 ? covXV/c.velocitySigma : 0;
+    c.positionFromXi2 =
+        std::sqrt(max(varX - (varV > 0 ? sqr(covXV)/varV : 0), scalar(0)));
+    return c;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::integrationModels::exactOU::exactOU(const dictionary& dict)
+:
+    integrationModel(typeName, dict)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::integrationModels::exactOU::integrate
+(
+    polymerChains& chains,
+    const UList<vector>& fluidVelocity,
+    const scalar deltaT,
+    const label timeIndex,
+    const label seed
+) const
+{
+    const PtrList<chainType>& types = chains.types();
+    List<coefficients> coeffs(types.size());
+    forAll(types, typei)
+    {
+        coeffs[typei] = coefficients::exact(types[typei], deltaT);
+    }
+
+    vector* x = chains.positions().data();
+    vector* v = chains.velocities().data();
+    const vector* u = fluidVelocity.cdata();
+
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        const coefficients& k = coeffs[chains.typeIndex(c)];
+        const chainNoise noise(seed, chains.globalId(c));
+        const label first = chains.start(c);
+
+        for (label i = first; i < chains.end(c); ++i)
+        {
+            scalar a[4], b[4];
+            noise.normals(timeIndex, i - first, chainNoise::stepStream0, a);
+            noise.normals(timeIndex, i - first, chainNoise::stepStream1, b);
+            const vector xi1(a[0], a[1], a[2]);
+            const vector xi2(a[3], b[0], b[1]);
+
+            const vector relative = v[i] - u[i];
+
+            x[i] +=
+                u[i]*deltaT + k.positionDecay*relative
+              + k.positionFromXi1*xi1 + k.positionFromXi2*xi2;
+
+            v[i] = u[i] + k.velocityDecay*relative + k.velocitySigma*xi1;
+        }
+    }
+}
+
+
+// ************************************************************************* //
