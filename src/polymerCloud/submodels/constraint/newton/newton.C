@@ -1,0 +1,261 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "newton.H"
+#include "checkedInput.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace constraintModels
+{
+    defineTypeNameAndDebug(newton, 0);
+    addToRunTimeSelectionTable(constraintModel, newton, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::constraintModels::newton::newton(const dictionary& dict)
+:
+    constraintModel(typeName, dict),
+    tolerance_
+    (
+        checkedInput::positiveScalarOrDefault
+        (
+            coeffDict_, "tolerance", 1e-10, "<relative rod-length error>"
+        )
+    ),
+    velocityTolerance_
+    (
+        checkedInput::positiveScalarOrDefault
+        (
+            coeffDict_,
+            "velocityTolerance",
+            1e-10,
+            "<relative rod velocity r.v/(a sqrt(kT/m))>"
+        )
+    ),
+    maxIterations_
+    (
+        checkedInput::labelAtLeastOrDefault
+        (
+            coeffDict_, "maxIterations", 50, 1, "<iteration cap>"
+        )
+    ),
+    directions_
+    (
+        SHAKE::directionTypeNames.getOrDefault
+        (
+            "directions", coeffDict_, SHAKE::directionType::start
+        )
+    ),
+    reference_(),
+    system_()
+{}
+
+
+// * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+Foam::label Foam::constraintModels::newton::correctLengths
+(
+    polymerChains& chains,
+    const label chaini,
+    const vector* directionSource,
+    const scalar deltaT,
+    scalar& residual
+) const
+{
+    const chainType& type = chains.type(chaini);
+    const label first = chains.start(chaini);
+    const label n = type.nBeads();
+    const label nRods = type.nRods();
+    const bool ring = type.ring();
+    const scalar a2 = sqr(type.rodLength());
+
+    vector* x = chains.positions().data() + first;
+    vector* v = chains.velocities().data() + first;
+    const vector* rc = directionSource + first;
+
+    system_.resize(nRods);
+    UList<scalar>& lower = system_.lower();
+    UList<scalar>& diagonal = system_.diagonal();
+    UList<scalar>& upper = system_.upper();
+    UList<scalar>& step = system_.source();
+
+    const scalar oneByDeltaT = 1/deltaT;
+
+    for (label iter = 0; iter <= maxIterations_; ++iter)
+    {
+        // Residuals and the Jacobian at the current positions
+        residual = 0;
+        for (label k = 0; k < nRods; ++k)
+        {
+            const label j = (k + 1 < n) ? k + 1 : 0;
+            const label previous = (k > 0) ? k - 1 : nRods - 1;
+            const label next = (k + 1 < nRods) ? k + 1 : 0;
+
+            const vector s = x[j] - x[k];
+            const scalar sigma = (s & s) - a2;
+            residual = max(residual, mag(sigma));
+
+            diagonal[k] = 4*(s & (rc[j] - rc[k]));
+            lower[k] = -2*(s & (rc[k] - rc[previous]));
+            upper[k] = -2*(s & (rc[(next + 1) % n] - rc[next]));
+            step[k] = -sigma;
+        }
+        residual /= 2*a2;
+
+        if (residual <= tolerance_)
+        {
+            return max(iter, 1);
+        }
+        if (iter == maxIterations_ || !system_.solve(ring))
+        {
+            return -max(iter, 1);
+        }
+
+        for (label k = 0; k < nRods; ++k)
+        {
+            const label j = (k + 1 < n) ? k + 1 : 0;
+            const vector shift = step[k]*(rc[j] - rc[k]);
+            x[k] -= shift;
+            x[j] += shift;
+            v[k] -= oneByDeltaT*shift;
+            v[j] += oneByDeltaT*shift;
+        }
+    }
+
+    return -maxIterations_;
+}
+
+
+Foam::label Foam::constraintModels::newton::correctChainVelocities
+(
+    polymerChains& chains,
+    const label chaini,
+    scalar& residual
+) const
+{
+    const chainType& type = chains.type(chaini);
+    const label first = chains.start(chaini);
+    const label n = type.nBeads();
+    const label nRods = type.nRods();
+
+    const vector* x = chains.positions().cdata() + first;
+    vector* v = chains.velocities().data() + first;
+
+    system_.resize(nRods);
+    UList<scalar>& lower = system_.lower();
+    UList<scalar>& diagonal = system_.diagonal();
+    UList<scalar>& upper = system_.upper();
+    UList<scalar>& kick = system_.source();
+
+    for (label k = 0; k < nRods; ++k)
+    {
+        const label j = (k + 1 < n) ? k + 1 : 0;
+        const label previous = (k > 0) ? k - 1 : nRods - 1;
+        const label next = (k + 1 < nRods) ? k + 1 : 0;
+
+        const vector r = x[j] - x[k];
+        diagonal[k] = 2*(r & r);
+        lower[k] = -(r & (x[k] - x[previous]));
+        upper[k] = -(r & (x[(next + 1) % n] - x[next]));
+        kick[k] = r & (v[j] - v[k]);
+    }
+
+    const bool solved = system_.solve(type.ring());
+
+    if (solved)
+    {
+        for (label k = 0; k < nRods; ++k)
+        {
+            const label j = (k + 1 < n) ? k + 1 : 0;
+            const vector dv = kick[k]*(x[j] - x[k]);
+            v[k] += dv;
+            v[j] -= dv;
+        }
+    }
+
+    residual = 0;
+    for (label k = 0; k < nRods; ++k)
+    {
+        const label j = (k + 1 < n) ? k + 1 : 0;
+        residual = max(residual, mag((x[j] - x[k]) & (v[j] - v[k])));
+    }
+    residual /= type.rodLength()*std::sqrt(type.kT()/type.beadMass());
+
+    return (solved && residual <= velocityTolerance_) ? 1 : -1;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::constraintModels::newton::correct
+(
+    polymerChains& chains,
+    const UList<vector>& positionsOld,
+    const scalar deltaT,
+    const scalar time
+) const
+{
+    const vector* directionSource = positionsOld.cdata();
+
+    if (directions_ == SHAKE::directionType::end)
+    {
+        reference_ = chains.positions();
+        directionSource = reference_.cdata();
+    }
+
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        scalar residual = 0;
+        const label iter =
+            correctLengths(chains, c, directionSource, deltaT, residual);
+
+        counters_.add(mag(iter), iter > 0);
+
+        if (iter < 0)
+        {
+            reportFailure(chains, c, "Rod-length", time, residual, -iter);
+        }
+    }
+
+    correctVelocities(chains, time);
+}
+
+
+void Foam::constraintModels::newton::correctVelocities
+(
+    polymerChains& chains,
+    const scalar time
+) const
+{
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        scalar residual = 0;
+        const label iter = correctChainVelocities(chains, c, residual);
+
+        counters_.add(1, iter > 0);
+
+        if (iter < 0)
+        {
+            reportFailure(chains, c, "Rod-velocity", time, residual, 1);
+        }
+    }
+}
+
+
+// ************************************************************************* //
