@@ -12,6 +12,7 @@ License
 
 #include "polymerCloud.H"
 #include "initialisationModel.H"
+#include "newton.H"
 #include "chainNoise.H"
 #include "checkedInput.H"
 #include "cpuTime.H"
@@ -127,14 +128,20 @@ void Foam::polymerCloud::setThermalVelocities()
                 0,
                 i - chains_.start(c),
                 chainNoise::setUpStream + 1,
+                0,
                 xi
             );
             v[i] = thermalSpeed*vector(xi[0], xi[1], xi[2]);
         }
     }
 
-    constraint_->correctVelocities(chains_, mesh_.time().value());
-    accumulateCounters();
+    // A direct solve, whatever the dynamics' method: the iterative ones
+    // converge slowly on smooth starting shapes such as the trefoil
+    if (constraint_->constrainsVelocities())
+    {
+        const constraintModels::newton projection(dictionary::null);
+        projection.correctVelocities(chains_, mesh_.time().value());
+    }
 }
 
 
@@ -162,17 +169,73 @@ void Foam::polymerCloud::checkRods(const fileName& origin) const
 
 void Foam::polymerCloud::accumulateCounters()
 {
-    const constraintCounters& step = constraint_->count();
+    intervalCounters_.add(constraint_->count());
+    totalCounters_.add(constraint_->count());
+    constraint_->resetCounters();
+}
 
-    for (constraintCounters* sum : {&intervalCounters_, &totalCounters_})
+
+void Foam::polymerCloud::subStepChain
+(
+    const label chaini,
+    const scalar deltaT
+)
+{
+    const Time& runTime = mesh_.time();
+    const label first = chains_.start(chaini);
+    const label n = chains_.size(chaini);
+
+    SubList<vector> x(chains_.positions(), n, first);
+    SubList<vector> v(chains_.velocities(), n, first);
+    SubList<vector> subStepStart(positionsOld_, n, first);
+    const List<vector> xStart(SubList<vector>(positionsOld_, n, first));
+    const List<vector> vStart(SubList<vector>(velocitiesOld_, n, first));
+
+    constraint_->countSubStepped();
+
+    for (label nSub = 2; nSub <= constraint_->maxSubSteps(); nSub *= 2)
     {
-        sum->solves += step.solves;
-        sum->iterations += step.iterations;
-        sum->maxIterations = max(sum->maxIterations, step.maxIterations);
-        sum->failures += step.failures;
+        x = xStart;
+        v = vStart;
+
+        bool converged = true;
+        for (label s = 0; s < nSub && converged; ++s)
+        {
+            // The fluid velocity stays that at x^n; each sub-step has its
+            // own noise, keyed by (nSub, s)
+            subStepStart = x;
+            integration_->integrateChain
+            (
+                chains_,
+                chaini,
+                flow_->beadVelocity(),
+                deltaT/nSub,
+                runTime.timeIndex(),
+                seed_,
+                nSub + s
+            );
+            converged = constraint_->correctChain
+            (
+                chains_, chaini, positionsOld_, deltaT/nSub, runTime.value()
+            );
+        }
+
+        if (converged)
+        {
+            subStepStart = xStart;
+            return;
+        }
     }
 
-    constraint_->resetCounters();
+    FatalErrorInFunction
+        << "The constraint solve of chain " << chains_.globalId(chaini)
+        << " (" << chains_.type(chaini).name() << ") at time "
+        << runTime.value() << " did not converge in "
+        << constraint_->maxSubSteps() << " sub-steps of the time step "
+        << deltaT << nl
+        << "    Reduce deltaT, raise maxSubSteps or maxIterations, or"
+        << " choose the newton constraint"
+        << exit(FatalError);
 }
 
 
@@ -249,6 +312,8 @@ Foam::polymerCloud::polymerCloud
     types_(),
     chains_(types_),
     positionsOld_(),
+    velocitiesOld_(),
+    failedChains_(),
     flow_(),
     integration_(),
     constraint_(),
@@ -292,7 +357,9 @@ Foam::polymerCloud::polymerCloud
             << exit(FatalIOError);
     }
 
-    if (savedCloudExists())
+    const bool restart = savedCloudExists();
+
+    if (restart)
     {
         readChains();
     }
@@ -302,6 +369,13 @@ Foam::polymerCloud::polymerCloud
     }
 
     readCloudFunctions();
+
+    // The starting configuration is part of the record (and of the VTK
+    // series), and a later run from the start time reads it back
+    if (!restart)
+    {
+        write();
+    }
 }
 
 
@@ -333,6 +407,7 @@ void Foam::polymerCloud::evolve()
     const scalar time = runTime.value();
 
     positionsOld_ = chains_.positions();
+    velocitiesOld_ = chains_.velocities();
 
     // 1. Unconstrained update in the fluid velocity at x^n
     flow_->update(chains_);
@@ -345,8 +420,13 @@ void Foam::polymerCloud::evolve()
         seed_
     );
 
-    // 2. Rod lengths and rod velocities
-    constraint_->correct(chains_, positionsOld_, deltaT, time);
+    // 2. Rod lengths and rod velocities; failed chains are sub-stepped
+    failedChains_.clear();
+    constraint_->correct(chains_, positionsOld_, deltaT, time, failedChains_);
+    for (const label c : failedChains_)
+    {
+        subStepChain(c, deltaT);
+    }
     accumulateCounters();
 
     // 3. Rod-rod collisions and bead-wall impacts
@@ -422,7 +502,8 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         << ", iterations per solve "
         << scalar(totalCounters_.iterations)/max(totalCounters_.solves, 1)
         << " (max " << totalCounters_.maxIterations << ")"
-        << ", failures " << totalCounters_.failures << nl
+        << ", failures " << totalCounters_.failures
+        << ", chains sub-stepped " << totalCounters_.subStepped << nl
         << "    beads " << nParcels() << ", outside the mesh "
         << nBeadsOutside() << nl;
 }

@@ -51,7 +51,7 @@ void Foam::cloudFunctions::chainStatistics::openFile()
     file_()
         << "# polymerCloud " << cloud_.name() << " statistics" << nl
         << "# time nChains Rg2 Ree2 kTkinetic kT rodError iterMean iterMax"
-        << " failures outside" << endl;
+        << " failures subStepped outside" << endl;
 }
 
 
@@ -108,6 +108,7 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
             << scalar(interval.iterations)/max(interval.solves, 1) << ' '
             << interval.maxIterations << ' '
             << cloud_.totalCounters().failures << ' '
+            << cloud_.totalCounters().subStepped << ' '
             << cloud_.nBeadsOutside() << endl;
     }
 
@@ -139,6 +140,9 @@ Foam::cloudFunctions::chainStatistics::chainStatistics
     {
         openFile();
     }
+
+    // The state the run starts from
+    writeLine();
 }
 
 

@@ -44,7 +44,7 @@ Foam::constraintModels::RATTLE::RATTLE(const dictionary& dict)
 {}
 
 
-// * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::label Foam::constraintModels::RATTLE::correctChainVelocities
 (
@@ -101,42 +101,6 @@ Foam::label Foam::constraintModels::RATTLE::correctChainVelocities
     residual /= scale;
 
     return -maxIterations_;
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::constraintModels::RATTLE::correct
-(
-    polymerChains& chains,
-    const UList<vector>& positionsOld,
-    const scalar deltaT,
-    const scalar time
-) const
-{
-    SHAKE::correct(chains, positionsOld, deltaT, time);
-    correctVelocities(chains, time);
-}
-
-
-void Foam::constraintModels::RATTLE::correctVelocities
-(
-    polymerChains& chains,
-    const scalar time
-) const
-{
-    for (label c = 0; c < chains.nChains(); ++c)
-    {
-        scalar residual = 0;
-        const label iter = correctChainVelocities(chains, c, residual);
-
-        counters_.add(mag(iter), iter > 0);
-
-        if (iter < 0)
-        {
-            reportFailure(chains, c, "Rod-velocity", time, residual, -iter);
-        }
-    }
 }
 
 

@@ -75,11 +75,35 @@ Foam::constraintModels::SHAKE::SHAKE
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
-Foam::label Foam::constraintModels::SHAKE::correctLengths
+const Foam::vector* Foam::constraintModels::SHAKE::directionSource
+(
+    const polymerChains& chains,
+    const label chaini,
+    const UList<vector>& positionsOld
+) const
+{
+    if (directions_ == directionType::end)
+    {
+        reference_ = SubList<vector>
+        (
+            chains.positions(),
+            chains.size(chaini),
+            chains.start(chaini)
+        );
+        return reference_.cdata();
+    }
+
+    return positionsOld.cdata() + chains.start(chaini);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::constraintModels::SHAKE::correctChainLengths
 (
     polymerChains& chains,
     const label chaini,
-    const vector* directionSource,
+    const UList<vector>& positionsOld,
     const scalar deltaT,
     scalar& residual
 ) const
@@ -92,7 +116,7 @@ Foam::label Foam::constraintModels::SHAKE::correctLengths
 
     vector* x = chains.positions().data() + first;
     vector* v = chains.velocities().data() + first;
-    const vector* rc = directionSource + first;
+    const vector* rc = directionSource(chains, chaini, positionsOld);
 
     // |s.s - a^2|/(2 a^2) is the relative length error to first order
     const scalar squaredTolerance = 2*a2*tolerance_;
@@ -138,40 +162,6 @@ Foam::label Foam::constraintModels::SHAKE::correctLengths
 
     residual = chains.maxRodLengthError(chaini);
     return -maxIterations_;
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::constraintModels::SHAKE::correct
-(
-    polymerChains& chains,
-    const UList<vector>& positionsOld,
-    const scalar deltaT,
-    const scalar time
-) const
-{
-    const vector* directionSource = positionsOld.cdata();
-
-    if (directions_ == directionType::end)
-    {
-        reference_ = chains.positions();
-        directionSource = reference_.cdata();
-    }
-
-    for (label c = 0; c < chains.nChains(); ++c)
-    {
-        scalar residual = 0;
-        const label iter =
-            correctLengths(chains, c, directionSource, deltaT, residual);
-
-        counters_.add(mag(iter), iter > 0);
-
-        if (iter < 0)
-        {
-            reportFailure(chains, c, "Rod-length", time, residual, -iter);
-        }
-    }
 }
 
 

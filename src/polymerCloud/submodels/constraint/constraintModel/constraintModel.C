@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "constraintModel.H"
+#include "checkedInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -19,6 +20,13 @@ namespace Foam
     defineTypeNameAndDebug(constraintModel, 0);
     defineRunTimeSelectionTable(constraintModel, dictionary);
 }
+
+const Foam::Enum<Foam::constraintModel::failureActionType>
+Foam::constraintModel::failureActionNames
+({
+    { failureActionType::stop, "stop" },
+    { failureActionType::subStep, "subStep" },
+});
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -31,10 +39,27 @@ Foam::constraintModel::constraintModel
 :
     coeffDict_(dict.optionalSubDict(type + "Coeffs")),
     counters_(),
+    failureAction_
+    (
+        failureActionNames.getOrDefault
+        (
+            "failureAction", coeffDict_, failureActionType::subStep
+        )
+    ),
+    maxSubSteps_
+    (
+        checkedInput::labelAtLeastOrDefault
+        (
+            coeffDict_, "maxSubSteps", 64, 2, "<largest number of sub-steps>"
+        )
+    ),
     failuresReported_(0),
     maxFailureReports_
     (
-        coeffDict_.getOrDefault<label>("maxFailureReports", 20)
+        checkedInput::labelAtLeastOrDefault
+        (
+            coeffDict_, "maxFailureReports", 20, 0, "<warnings in the log>"
+        )
     )
 {}
 
@@ -51,13 +76,26 @@ void Foam::constraintModel::reportFailure
     const label iterations
 ) const
 {
+    if (failureAction_ == failureActionType::stop)
+    {
+        FatalErrorInFunction
+            << stage << " constraint did not converge for chain "
+            << chains.globalId(chaini) << " (" << chains.type(chaini).name()
+            << ") at time " << time << ": residual " << residual
+            << " after " << iterations << " iterations" << nl
+            << "    (failureAction stop; failureAction subStep redoes the"
+            << " chain's step in sub-steps)"
+            << exit(FatalError);
+    }
+
     if (failuresReported_ < maxFailureReports_)
     {
         WarningInFunction
             << stage << " constraint did not converge for chain "
             << chains.globalId(chaini) << " (" << chains.type(chaini).name()
             << ") at time " << time << ": residual " << residual
-            << " after " << iterations << " iterations" << endl;
+            << " after " << iterations << " iterations; sub-stepping"
+            << endl;
 
         if (failuresReported_ + 1 == maxFailureReports_)
         {
@@ -66,6 +104,102 @@ void Foam::constraintModel::reportFailure
         }
     }
     ++failuresReported_;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::constraintModel::correctChain
+(
+    polymerChains& chains,
+    const label chaini,
+    const UList<vector>& positionsOld,
+    const scalar deltaT,
+    const scalar time
+) const
+{
+    scalar residual = 0;
+    label iter =
+        correctChainLengths(chains, chaini, positionsOld, deltaT, residual);
+
+    if (iter != 0)
+    {
+        counters_.add(mag(iter), iter > 0);
+    }
+    if (iter < 0)
+    {
+        reportFailure(chains, chaini, "Rod-length", time, residual, -iter);
+        return false;
+    }
+
+    iter = correctChainVelocities(chains, chaini, residual);
+
+    if (iter != 0)
+    {
+        counters_.add(mag(iter), iter > 0);
+    }
+    if (iter < 0)
+    {
+        reportFailure(chains, chaini, "Rod-velocity", time, residual, -iter);
+        return false;
+    }
+
+    return true;
+}
+
+
+void Foam::constraintModel::correct
+(
+    polymerChains& chains,
+    const UList<vector>& positionsOld,
+    const scalar deltaT,
+    const scalar time,
+    DynamicList<label>& failedChains
+) const
+{
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        if (!correctChain(chains, c, positionsOld, deltaT, time))
+        {
+            failedChains.append(c);
+        }
+    }
+}
+
+
+void Foam::constraintModel::correct
+(
+    polymerChains& chains,
+    const UList<vector>& positionsOld,
+    const scalar deltaT,
+    const scalar time
+) const
+{
+    DynamicList<label> failedChains;
+    correct(chains, positionsOld, deltaT, time, failedChains);
+}
+
+
+void Foam::constraintModel::correctVelocities
+(
+    polymerChains& chains,
+    const scalar time
+) const
+{
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        scalar residual = 0;
+        const label iter = correctChainVelocities(chains, c, residual);
+
+        if (iter != 0)
+        {
+            counters_.add(mag(iter), iter > 0);
+        }
+        if (iter < 0)
+        {
+            reportFailure(chains, c, "Rod-velocity", time, residual, -iter);
+        }
+    }
 }
 
 

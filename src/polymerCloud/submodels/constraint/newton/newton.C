@@ -67,13 +67,13 @@ Foam::constraintModels::newton::newton(const dictionary& dict)
 {}
 
 
-// * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::constraintModels::newton::correctLengths
+Foam::label Foam::constraintModels::newton::correctChainLengths
 (
     polymerChains& chains,
     const label chaini,
-    const vector* directionSource,
+    const UList<vector>& positionsOld,
     const scalar deltaT,
     scalar& residual
 ) const
@@ -87,7 +87,12 @@ Foam::label Foam::constraintModels::newton::correctLengths
 
     vector* x = chains.positions().data() + first;
     vector* v = chains.velocities().data() + first;
-    const vector* rc = directionSource + first;
+    const vector* rc = positionsOld.cdata() + first;
+    if (directions_ == SHAKE::directionType::end)
+    {
+        reference_ = SubList<vector>(chains.positions(), n, first);
+        rc = reference_.cdata();
+    }
 
     system_.resize(nRods);
     UList<scalar>& lower = system_.lower();
@@ -198,63 +203,6 @@ Foam::label Foam::constraintModels::newton::correctChainVelocities
     residual /= type.rodLength()*std::sqrt(type.kT()/type.beadMass());
 
     return (solved && residual <= velocityTolerance_) ? 1 : -1;
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::constraintModels::newton::correct
-(
-    polymerChains& chains,
-    const UList<vector>& positionsOld,
-    const scalar deltaT,
-    const scalar time
-) const
-{
-    const vector* directionSource = positionsOld.cdata();
-
-    if (directions_ == SHAKE::directionType::end)
-    {
-        reference_ = chains.positions();
-        directionSource = reference_.cdata();
-    }
-
-    for (label c = 0; c < chains.nChains(); ++c)
-    {
-        scalar residual = 0;
-        const label iter =
-            correctLengths(chains, c, directionSource, deltaT, residual);
-
-        counters_.add(mag(iter), iter > 0);
-
-        if (iter < 0)
-        {
-            reportFailure(chains, c, "Rod-length", time, residual, -iter);
-        }
-    }
-
-    correctVelocities(chains, time);
-}
-
-
-void Foam::constraintModels::newton::correctVelocities
-(
-    polymerChains& chains,
-    const scalar time
-) const
-{
-    for (label c = 0; c < chains.nChains(); ++c)
-    {
-        scalar residual = 0;
-        const label iter = correctChainVelocities(chains, c, residual);
-
-        counters_.add(1, iter > 0);
-
-        if (iter < 0)
-        {
-            reportFailure(chains, c, "Rod-velocity", time, residual, 1);
-        }
-    }
 }
 
 

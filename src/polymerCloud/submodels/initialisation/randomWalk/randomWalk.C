@@ -63,13 +63,13 @@ Foam::List<Foam::point> Foam::initialisationModels::randomWalk::walk
     List<point> x(type.nBeads());
 
     scalar u[4];
-    noise.uniforms(0, 0, chainNoise::setUpStream, u);
+    noise.uniforms(0, 0, chainNoise::setUpStream, 0, u);
     x[0] = box_.min() + cmptMultiply(vector(u[0], u[1], u[2]), box_.span());
 
     for (label i = 1; i < x.size(); ++i)
     {
         // A uniform direction: cos(theta) uniform in (-1, 1)
-        noise.uniforms(0, i, chainNoise::setUpStream, u);
+        noise.uniforms(0, i, chainNoise::setUpStream, 0, u);
         const scalar cosTheta = 2*u[0] - 1;
         const scalar sinTheta = std::sqrt(max(1 - sqr(cosTheta), scalar(0)));
         const scalar phi = constant::mathematical::twoPi*u[1];

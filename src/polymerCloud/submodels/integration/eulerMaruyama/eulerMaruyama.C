@@ -36,37 +36,38 @@ Foam::integrationModels::eulerMaruyama::eulerMaruyama(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::integrationModels::eulerMaruyama::integrate
+void Foam::integrationModels::eulerMaruyama::integrateChain
 (
     polymerChains& chains,
-    const UList<vector>& fluidVelocity,
+    const label chaini,
+    const UList<vector>& driftVelocity,
     const scalar deltaT,
     const label timeIndex,
-    const label seed
+    const label seed,
+    const label subStepKey
 ) const
 {
+    const chainType& type = chains.type(chaini);
+    const scalar gammaDt = deltaT/type.inertialTime();
+    const scalar sigma = std::sqrt(2*gammaDt*type.kT()/type.beadMass());
+
+    const chainNoise noise(seed, chains.globalId(chaini));
+    const label first = chains.start(chaini);
+
     vector* x = chains.positions().data();
     vector* v = chains.velocities().data();
-    const vector* u = fluidVelocity.cdata();
+    const vector* u = driftVelocity.cdata();
 
-    for (label c = 0; c < chains.nChains(); ++c)
+    for (label i = first; i < chains.end(chaini); ++i)
     {
-        const chainType& type = chains.type(c);
-        const scalar gammaDt = deltaT/type.inertialTime();
-        const scalar sigma =
-            std::sqrt(2*gammaDt*type.kT()/type.beadMass());
+        scalar a[4];
+        noise.normals
+        (
+            timeIndex, i - first, chainNoise::stepStream0, subStepKey, a
+        );
 
-        const chainNoise noise(seed, chains.globalId(c));
-        const label first = chains.start(c);
-
-        for (label i = first; i < chains.end(c); ++i)
-        {
-            scalar a[4];
-            noise.normals(timeIndex, i - first, chainNoise::stepStream0, a);
-
-            x[i] += v[i]*deltaT;
-            v[i] += -gammaDt*(v[i] - u[i]) + sigma*vector(a[0], a[1], a[2]);
-        }
+        x[i] += v[i]*deltaT;
+        v[i] += -gammaDt*(v[i] - u[i]) + sigma*vector(a[0], a[1], a[2]);
     }
 }
 

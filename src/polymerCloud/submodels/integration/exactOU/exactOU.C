@@ -93,54 +93,65 @@ Foam::integrationModels::exactOU::coefficients::exact
 
 Foam::integrationModels::exactOU::exactOU(const dictionary& dict)
 :
-    integrationModel(typeName, dict)
+    integrationModel(typeName, dict),
+    cache_(),
+    cachedDeltaT_(-1)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::integrationModels::exactOU::integrate
+void Foam::integrationModels::exactOU::integrateChain
 (
     polymerChains& chains,
-    const UList<vector>& fluidVelocity,
+    const label chaini,
+    const UList<vector>& driftVelocity,
     const scalar deltaT,
     const label timeIndex,
-    const label seed
+    const label seed,
+    const label subStepKey
 ) const
 {
     const PtrList<chainType>& types = chains.types();
-    List<coefficients> coeffs(types.size());
-    forAll(types, typei)
+    if (deltaT != cachedDeltaT_ || cache_.size() != types.size())
     {
-        coeffs[typei] = coefficients::exact(types[typei], deltaT);
+        cache_.setSize(types.size());
+        forAll(types, typei)
+        {
+            cache_[typei] = coefficients::exact(types[typei], deltaT);
+        }
+        cachedDeltaT_ = deltaT;
     }
+
+    const coefficients& k = cache_[chains.typeIndex(chaini)];
+    const chainNoise noise(seed, chains.globalId(chaini));
+    const label first = chains.start(chaini);
 
     vector* x = chains.positions().data();
     vector* v = chains.velocities().data();
-    const vector* u = fluidVelocity.cdata();
+    const vector* u = driftVelocity.cdata();
 
-    for (label c = 0; c < chains.nChains(); ++c)
+    for (label i = first; i < chains.end(chaini); ++i)
     {
-        const coefficients& k = coeffs[chains.typeIndex(c)];
-        const chainNoise noise(seed, chains.globalId(c));
-        const label first = chains.start(c);
+        scalar a[4], b[4];
+        noise.normals
+        (
+            timeIndex, i - first, chainNoise::stepStream0, subStepKey, a
+        );
+        noise.normals
+        (
+            timeIndex, i - first, chainNoise::stepStream1, subStepKey, b
+        );
+        const vector xi1(a[0], a[1], a[2]);
+        const vector xi2(a[3], b[0], b[1]);
 
-        for (label i = first; i < chains.end(c); ++i)
-        {
-            scalar a[4], b[4];
-            noise.normals(timeIndex, i - first, chainNoise::stepStream0, a);
-            noise.normals(timeIndex, i - first, chainNoise::stepStream1, b);
-            const vector xi1(a[0], a[1], a[2]);
-            const vector xi2(a[3], b[0], b[1]);
+        const vector relative = v[i] - u[i];
 
-            const vector relative = v[i] - u[i];
+        x[i] +=
+            u[i]*deltaT + k.positionDecay*relative
+          + k.positionFromXi1*xi1 + k.positionFromXi2*xi2;
 
-            x[i] +=
-                u[i]*deltaT + k.positionDecay*relative
-              + k.positionFromXi1*xi1 + k.positionFromXi2*xi2;
-
-            v[i] = u[i] + k.velocityDecay*relative + k.velocitySigma*xi1;
-        }
+        v[i] = u[i] + k.velocityDecay*relative + k.velocitySigma*xi1;
     }
 }
 

@@ -33,4 +33,22 @@ Foam::integrationModel::integrationModel
 {}
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::integrationModel::integrate
+(
+    polymerChains& chains,
+    const UList<vector>& driftVelocity,
+    const scalar deltaT,
+    const label timeIndex,
+    const label seed
+) const
+{
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        integrateChain(chains, c, driftVelocity, deltaT, timeIndex, seed, 0);
+    }
+}
+
+
 // ************************************************************************* //
