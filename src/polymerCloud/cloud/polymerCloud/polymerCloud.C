@@ -90,6 +90,48 @@ void Foam::polymerCloud::readCloudFunctions()
 }
 
 
+void Foam::polymerCloud::readForces(const dictionary& subModels)
+{
+    const wordList names
+    (
+        subModels.getOrDefault<wordList>("forces", wordList())
+    );
+
+    for (const word& name : names)
+    {
+        forces_.append(forceModel::New(name, subModels));
+    }
+}
+
+
+void Foam::polymerCloud::updateDrift()
+{
+    flow_->update(chains_);
+
+    if (forces_.empty())
+    {
+        return;
+    }
+
+    force_.resize(chains_.nBeads());
+    force_ = Zero;
+    for (const forceModel& model : forces_)
+    {
+        model.addForce(chains_, force_);
+    }
+
+    drift_ = flow_->beadVelocity();
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const scalar mobility = 1/chains_.type(c).friction();
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        {
+            drift_[i] += mobility*force_[i];
+        }
+    }
+}
+
+
 void Foam::polymerCloud::initialise()
 {
     const dictionary& subModels = properties_.subDict("subModels");
@@ -208,7 +250,7 @@ void Foam::polymerCloud::subStepChain
             (
                 chains_,
                 chaini,
-                flow_->beadVelocity(),
+                drift(),
                 deltaT/nSub,
                 runTime.timeIndex(),
                 seed_,
@@ -314,7 +356,10 @@ Foam::polymerCloud::polymerCloud
     positionsOld_(),
     velocitiesOld_(),
     failedChains_(),
+    force_(),
+    drift_(),
     flow_(),
+    forces_(),
     integration_(),
     constraint_(),
     collision_(),
@@ -342,6 +387,7 @@ Foam::polymerCloud::polymerCloud
     );
 
     flow_ = flowModel::New(subModels, mesh_);
+    readForces(subModels);
     integration_ = integrationModel::New(subModels);
     constraint_ = constraintModel::New(subModels);
     collision_ = collisionModel::New(subModels);
@@ -361,11 +407,16 @@ Foam::polymerCloud::polymerCloud
 
     if (restart)
     {
+        Info<< name() << ": reading the chains saved in "
+            << mesh_.time().timeName()/cloud::prefix/name() << endl;
         readChains();
     }
     else
     {
         initialise();
+        Info<< name() << ": created "
+            << returnReduce(chains_.nChains(), sumOp<label>()) << " chains with the " << subModels.get<word>("initialisation")
+            << " initialisation" << endl;
     }
 
     readCloudFunctions();
@@ -409,12 +460,12 @@ void Foam::polymerCloud::evolve()
     positionsOld_ = chains_.positions();
     velocitiesOld_ = chains_.velocities();
 
-    // 1. Unconstrained update in the fluid velocity at x^n
-    flow_->update(chains_);
+    // 1. Unconstrained update in the fluid velocity and forces at x^n
+    updateDrift();
     integration_->integrate
     (
         chains_,
-        flow_->beadVelocity(),
+        drift(),
         deltaT,
         runTime.timeIndex(),
         seed_
@@ -474,8 +525,16 @@ void Foam::polymerCloud::writeSummary(Ostream& os) const
         << "; constraint " << constraint_->type()
         << "; collision " << collision_->type()
         << "; wall " << wall_->type()
-        << "; flow " << flow_->type()
-        << (active_ ? "" : " (inactive)") << nl;
+        << "; flow " << flow_->type();
+    if (forces_.size())
+    {
+        os  << "; forces";
+        for (const forceModel& model : forces_)
+        {
+            os  << ' ' << model.type();
+        }
+    }
+    os  << (active_ ? "" : " (inactive)") << nl;
 
     forAll(types_, typei)
     {
