@@ -367,6 +367,8 @@ Foam::polymerCloud::polymerCloud
     functions_(),
     intervalCounters_(),
     totalCounters_(),
+    intervalCollisions_(),
+    totalCollisions_(),
     evolveSeconds_(0),
     beadSteps_(0)
 {
@@ -483,6 +485,9 @@ void Foam::polymerCloud::evolve()
     // 3. Rod-rod collisions and bead-wall impacts
     collision_->correct(chains_, positionsOld_, deltaT, time);
     wall_->correct(chains_, positionsOld_, deltaT, time);
+    intervalCollisions_.add(collision_->count());
+    totalCollisions_.add(collision_->count());
+    collision_->resetCounters();
 
     evolveSeconds_ += timer.cpuTimeIncrement();
     beadSteps_ += chains_.nBeads();
@@ -563,6 +568,9 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         << " (max " << totalCounters_.maxIterations << ")"
         << ", failures " << totalCounters_.failures
         << ", chains sub-stepped " << totalCounters_.subStepped << nl
+        << "    rod-rod collisions " << totalCollisions_.events
+        << " (max per step " << totalCollisions_.maxEventsPerStep
+        << "), event-loop stalls " << totalCollisions_.stalls << nl
         << "    beads " << nParcels() << ", outside the mesh "
         << nBeadsOutside() << nl;
 }

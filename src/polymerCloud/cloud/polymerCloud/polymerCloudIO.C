@@ -49,12 +49,12 @@ bool Foam::polymerCloud::savedCloudExists() const
 }
 
 
-Foam::List<Foam::point> Foam::polymerCloud::readPositions() const
+Foam::List<Foam::point> Foam::polymerCloud::readPositions(const IOobject& io)
 {
-    IOobject io(fieldIOobject("positions", IOobject::MUST_READ));
     IFstream is(io.objectPath());
 
-    if (!is.good() || !io.readHeader(is))
+    IOobject header(io);
+    if (!is.good() || !header.readHeader(is))
     {
         FatalIOErrorInFunction(is)
             << "Cannot read the header of " << io.objectPath()
@@ -78,7 +78,10 @@ Foam::List<Foam::point> Foam::polymerCloud::readPositions() const
 
 void Foam::polymerCloud::readChains()
 {
-    const List<point> positions(readPositions());
+    const List<point> positions
+    (
+        readPositions(fieldIOobject("positions", IOobject::MUST_READ))
+    );
     const IOField<vector> U(fieldIOobject("U", IOobject::MUST_READ));
     const IOField<label> chainId
     (

@@ -49,9 +49,9 @@ void Foam::cloudFunctions::chainStatistics::openFile()
     file_().precision(10);
 
     file_()
-        << "# polymerCloud " << cloud_.name() << " statistics" << nl
+        << "# statistics of polymerCloud " << cloud_.name() << nl
         << "# time nChains Rg2 Ree2 kTkinetic kT rodError iterMean iterMax"
-        << " failures subStepped outside" << endl;
+        << " failures subStepped collisions stalls outside" << endl;
 }
 
 
@@ -94,6 +94,7 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
 
     const polymerCloud::constraintCounters& interval =
         cloud_.intervalCounters();
+    const label nOutside = cloud_.nBeadsOutside();
 
     if (Pstream::master())
     {
@@ -109,7 +110,9 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
             << interval.maxIterations << ' '
             << cloud_.totalCounters().failures << ' '
             << cloud_.totalCounters().subStepped << ' '
-            << cloud_.nBeadsOutside() << endl;
+            << cloud_.intervalCollisions().events << ' '
+            << cloud_.totalCollisions().stalls << ' '
+            << nOutside << endl;
     }
 
     cloud_.resetIntervalCounters();

@@ -29,7 +29,8 @@ Foam::collisionModel::collisionModel
     const dictionary& dict
 )
 :
-    coeffDict_(dict.optionalSubDict(type + "Coeffs"))
+    coeffDict_(dict.optionalSubDict(type + "Coeffs")),
+    counters_()
 {}
 
 

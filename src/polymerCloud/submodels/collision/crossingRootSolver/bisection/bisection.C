@@ -1,0 +1,48 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "bisection.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace crossingRootSolvers
+{
+    defineTypeNameAndDebug(bisection, 0);
+    addToRunTimeSelectionTable(crossingRootSolver, bisection, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::crossingRootSolvers::bisection::earliestCrossing
+(
+    const rodPairCrossing& pair,
+    const scalar T
+) const
+{
+    const scalar start = pair.tripleProduct(0);
+    const scalar end = pair.tripleProduct(T);
+
+    if (start*end >= 0)
+    {
+        return -1;
+    }
+
+    const scalar s = bisect(pair, 0, T, start);
+    return pair.crossesAt(s) ? s : -1;
+}
+
+// ************************************************************************* //

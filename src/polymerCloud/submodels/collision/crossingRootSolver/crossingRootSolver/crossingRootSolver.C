@@ -1,0 +1,83 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "crossingRootSolver.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(crossingRootSolver, 0);
+    defineRunTimeSelectionTable(crossingRootSolver, dictionary);
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::crossingRootSolver::bisect
+(
+    const rodPairCrossing& pair,
+    scalar a,
+    scalar b,
+    scalar valueA
+)
+{
+    // To the last representable midpoint. The end before the sign change
+    // is returned: the state there is not yet crossed.
+    for (int iter = 0; iter < 200; ++iter)
+    {
+        const scalar middle = 0.5*(a + b);
+        if (middle <= a || middle >= b)
+        {
+            break;
+        }
+        const scalar valueMiddle = pair.tripleProduct(middle);
+        if ((valueMiddle < 0) == (valueA < 0))
+        {
+            a = middle;
+            valueA = valueMiddle;
+        }
+        else
+        {
+            b = middle;
+        }
+    }
+    return a;
+}
+
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::crossingRootSolver> Foam::crossingRootSolver::New
+(
+    const word& solverType,
+    const dictionary& dict
+)
+{
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(solverType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "rootSolver",
+            solverType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<crossingRootSolver>(cstrIter()());
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,84 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "newtonRoot.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace crossingRootSolvers
+{
+    defineTypeNameAndDebug(newtonRoot, 0);
+    addToRunTimeSelectionTable(crossingRootSolver, newtonRoot, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::crossingRootSolvers::newtonRoot::earliestCrossing
+(
+    const rodPairCrossing& pair,
+    const scalar T
+) const
+{
+    scalar low = 0;
+    scalar high = T;
+    scalar valueLow = pair.tripleProduct(low);
+    const scalar valueHigh = pair.tripleProduct(high);
+
+    if (valueLow*valueHigh >= 0)
+    {
+        return -1;
+    }
+
+    const FixedList<scalar, 4> c = pair.tripleProductCubic();
+    scalar s = valueLow/(valueLow - valueHigh)*T;
+
+    for (int iter = 0; iter < 100; ++iter)
+    {
+        const scalar value = pair.tripleProduct(s);
+        if (value == 0)
+        {
+            break;
+        }
+        if ((value < 0) == (valueLow < 0))
+        {
+            low = s;
+            valueLow = value;
+        }
+        else
+        {
+            high = s;
+        }
+
+        const scalar slope = c[1] + s*(2*c[2] + 3*s*c[3]);
+        scalar next = (slope != 0) ? s - value/slope : 0.5*(low + high);
+        if (!(next > low && next < high))
+        {
+            next = 0.5*(low + high);
+        }
+        if (next == s || high - low <= 4*SMALL*T)
+        {
+            break;
+        }
+        s = next;
+    }
+
+    // The time on the not-yet-crossed side of the root
+    s = low;
+    return pair.crossesAt(s) ? s : -1;
+}
+
+// ************************************************************************* //

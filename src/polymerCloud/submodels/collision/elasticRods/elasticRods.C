@@ -1,0 +1,456 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "elasticRods.H"
+#include "checkedInput.H"
+#include "addToRunTimeSelectionTable.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace collisionModels
+{
+    defineTypeNameAndDebug(elasticRods, 0);
+    addToRunTimeSelectionTable(collisionModel, elasticRods, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Key of a grid cell from its integer coordinates
+inline uint64_t cellKey(const int64_t i, const int64_t j, const int64_t k)
+{
+    const uint64_t mask = (uint64_t(1) << 21) - 1;
+    return
+        (uint64_t(i) & mask)
+      | ((uint64_t(j) & mask) << 21)
+      | ((uint64_t(k) & mask) << 42);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::collisionModels::elasticRods::elasticRods(const dictionary& dict)
+:
+    collisionModel(typeName, dict),
+    rootSolver_
+    (
+        crossingRootSolver::New
+        (
+            coeffDict_.getOrDefault<word>("rootSolver", "isolating"),
+            coeffDict_
+        )
+    ),
+    maxEvents_
+    (
+        checkedInput::labelAtLeastOrDefault
+        (
+            coeffDict_, "maxEvents", 100000, 1, "<events per time step>"
+        )
+    ),
+    stallTime_
+    (
+        checkedInput::positiveScalarOrDefault
+        (
+            coeffDict_, "stallTime", 1e-9, "<event spacing / deltaT>"
+        )
+    ),
+    stallEvents_
+    (
+        checkedInput::labelAtLeastOrDefault
+        (
+            coeffDict_, "stallEvents", 100, 1, "<successive short events>"
+        )
+    ),
+    cellSize_(1)
+{}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::collisionModels::elasticRods::buildRods
+(
+    const polymerChains& chains
+) const
+{
+    rods_.clear();
+    rodChain_.clear();
+    beadRods_.resize(chains.nBeads());
+    beadRods_ = FixedList<label, 2>({-1, -1});
+
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        const label first = chains.start(c);
+        const label n = chains.size(c);
+
+        for (label k = 0; k < chains.type(c).nRods(); ++k)
+        {
+            const label a = first + k;
+            const label b = first + (k + 1) % n;
+            const label rod = rods_.size();
+
+            rods_.append(labelPair(a, b));
+            rodChain_.append(c);
+            beadRods_[a][1] = rod;
+            beadRods_[b][0] = rod;
+        }
+    }
+}
+
+
+inline Foam::vector Foam::collisionModels::elasticRods::positionAt
+(
+    const label bead,
+    const scalar t
+) const
+{
+    return position_[bead] + (t - beadTime_[bead])*velocity_[bead];
+}
+
+
+Foam::boundBox Foam::collisionModels::elasticRods::sweep
+(
+    const label rod,
+    const scalar t,
+    const scalar dt
+) const
+{
+    boundBox box(positionAt(rods_[rod].first(), t));
+    box.add(positionAt(rods_[rod].second(), t));
+    box.add(positionAt(rods_[rod].first(), dt));
+    box.add(positionAt(rods_[rod].second(), dt));
+    return box;
+}
+
+
+void Foam::collisionModels::elasticRods::addPair
+(
+    const label rodA,
+    const label rodB
+) const
+{
+    if (rodA == rodB)
+    {
+        return;
+    }
+
+    const labelPair& a = rods_[rodA];
+    const labelPair& b = rods_[rodB];
+    if
+    (
+        a.first() == b.first() || a.first() == b.second()
+     || a.second() == b.first() || a.second() == b.second()
+    )
+    {
+        // Rods sharing a bead always meet there: no crossing to detect
+        return;
+    }
+
+    const uint64_t key =
+        (uint64_t(min(rodA, rodB)) << 32) | uint64_t(max(rodA, rodB));
+
+    if (pairSet_.insert(key).second)
+    {
+        const label pairi = pairs_.size();
+        pairs_.append(labelPair(rodA, rodB));
+        rodPairs_[rodA].push_back(pairi);
+        rodPairs_[rodB].push_back(pairi);
+    }
+}
+
+
+void Foam::collisionModels::elasticRods::insert
+(
+    const label rod,
+    const boundBox& box
+) const
+{
+    const int64_t i0 = std::floor(box.min().x()/cellSize_);
+    const int64_t j0 = std::floor(box.min().y()/cellSize_);
+    const int64_t k0 = std::floor(box.min().z()/cellSize_);
+    const int64_t i1 = std::floor(box.max().x()/cellSize_);
+    const int64_t j1 = std::floor(box.max().y()/cellSize_);
+    const int64_t k1 = std::floor(box.max().z()/cellSize_);
+
+    for (int64_t i = i0; i <= i1; ++i)
+    {
+        for (int64_t j = j0; j <= j1; ++j)
+        {
+            for (int64_t k = k0; k <= k1; ++k)
+            {
+                std::vector<label>& cell = grid_[cellKey(i, j, k)];
+                for (const label other : cell)
+                {
+                    if (sweptBox_[other].overlaps(box))
+                    {
+                        addPair(rod, other);
+                    }
+                }
+                if (cell.empty() || cell.back() != rod)
+                {
+                    cell.push_back(rod);
+                }
+            }
+        }
+    }
+}
+
+
+void Foam::collisionModels::elasticRods::predict
+(
+    const label pairi,
+    const scalar t,
+    const scalar dt
+) const
+{
+    const label a0 = rods_[pairs_[pairi].first()].first();
+    const label a1 = rods_[pairs_[pairi].first()].second();
+    const label b0 = rods_[pairs_[pairi].second()].first();
+    const label b1 = rods_[pairs_[pairi].second()].second();
+
+    const rodPairCrossing pair
+    (
+        positionAt(a0, t), positionAt(a1, t),
+        positionAt(b0, t), positionAt(b1, t),
+        velocity_[a0], velocity_[a1], velocity_[b0], velocity_[b1]
+    );
+
+    const scalar s = rootSolver_->earliestCrossing(pair, dt - t);
+
+    if (s >= 0)
+    {
+        queue_.push
+        (
+            event
+            {
+                t + s,
+                pairi,
+                version_[a0] + version_[a1] + version_[b0] + version_[b1]
+            }
+        );
+    }
+}
+
+
+bool Foam::collisionModels::elasticRods::resolve
+(
+    const label pairi,
+    const scalar t,
+    UList<vector>& velocitiesDagger
+) const
+{
+    const label beads[4] =
+    {
+        rods_[pairs_[pairi].first()].first(),
+        rods_[pairs_[pairi].first()].second(),
+        rods_[pairs_[pairi].second()].first(),
+        rods_[pairs_[pairi].second()].second()
+    };
+
+    for (const label bead : beads)
+    {
+        position_[bead] = positionAt(bead, t);
+        beadTime_[bead] = t;
+    }
+
+    const rodPairCrossing pair
+    (
+        position_[beads[0]], position_[beads[1]],
+        position_[beads[2]], position_[beads[3]],
+        velocity_[beads[0]], velocity_[beads[1]],
+        velocity_[beads[2]], velocity_[beads[3]]
+    );
+
+    FixedList<vector, 4> after;
+    if (!pair.elasticImpulse(0, after))
+    {
+        return false;
+    }
+
+    for (label k = 0; k < 4; ++k)
+    {
+        const label bead = beads[k];
+        velocitiesDagger[bead] += after[k] - velocity_[bead];
+        velocity_[bead] = after[k];
+        ++version_[bead];
+    }
+
+    return true;
+}
+
+
+void Foam::collisionModels::elasticRods::reportStall
+(
+    const polymerChains& chains,
+    const label pairi,
+    const scalar time,
+    const label nEvents
+) const
+{
+    WarningInFunction
+        << "Rod-rod event loop stopped at time " << time << " after "
+        << nEvents << " events, the last between chains "
+        << chains.globalId(rodChain_[pairs_[pairi].first()]) << " and "
+        << chains.globalId(rodChain_[pairs_[pairi].second()])
+        << (nEvents >= maxEvents_ ? " (maxEvents)" : " (tau -> 0 stall)")
+        << ": the beads stay at the last uncrossed state of the step"
+        << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::collisionModels::elasticRods::correct
+(
+    polymerChains& chains,
+    const UList<vector>& positionsOld,
+    const scalar deltaT,
+    const scalar time
+) const
+{
+    const label nBeads = chains.nBeads();
+    List<vector>& x = chains.positions();
+    List<vector>& vDagger = chains.velocities();
+
+    if (rods_.empty() || beadRods_.size() != nBeads)
+    {
+        buildRods(chains);
+    }
+
+    // Straight paths over the step (paper eq. 1), in step time [0, dt]
+    position_ = positionsOld;
+    velocity_.resize(nBeads);
+    for (label i = 0; i < nBeads; ++i)
+    {
+        velocity_[i] = (x[i] - positionsOld[i])/deltaT;
+    }
+    beadTime_.resize(nBeads);
+    beadTime_ = 0;
+    version_.resize(nBeads);
+    version_ = 0;
+
+    // Broad phase: rods whose swept boxes overlap
+    sweptBox_.resize(rods_.size());
+    scalar largest = 0;
+    forAll(rods_, rod)
+    {
+        sweptBox_[rod] = sweep(rod, 0, deltaT);
+        largest = max(largest, cmptMax(sweptBox_[rod].span()));
+    }
+    cellSize_ = max(largest, VSMALL);
+
+    grid_.clear();
+    pairs_.clear();
+    pairSet_.clear();
+    rodPairs_.assign(rods_.size(), std::vector<label>());
+    forAll(rods_, rod)
+    {
+        insert(rod, sweptBox_[rod]);
+    }
+
+    queue_ = std::priority_queue<event>();
+    forAll(pairs_, pairi)
+    {
+        predict(pairi, 0, deltaT);
+    }
+
+    // Multi-collision loop: earliest event first
+    label nEvents = 0;
+    label nShort = 0;
+    scalar now = 0;
+    bool stalled = false;
+
+    while (!queue_.empty())
+    {
+        const event e = queue_.top();
+        queue_.pop();
+
+        const labelPair& pair = pairs_[e.pair];
+        const label stamp =
+            version_[rods_[pair.first()].first()]
+          + version_[rods_[pair.first()].second()]
+          + version_[rods_[pair.second()].first()]
+          + version_[rods_[pair.second()].second()];
+
+        if (stamp != e.stamp)
+        {
+            // A bead of this pair has changed course since
+            continue;
+        }
+
+        nShort = (e.time - now < stallTime_*deltaT) ? nShort + 1 : 0;
+        now = e.time;
+
+        if (nShort >= stallEvents_ || nEvents >= maxEvents_)
+        {
+            reportStall(chains, e.pair, time - deltaT + now, nEvents);
+            stalled = true;
+            break;
+        }
+
+        if (!resolve(e.pair, now, vDagger))
+        {
+            continue;
+        }
+        ++nEvents;
+
+        // Re-predict every pair of the rods through the four beads, and
+        // grow the broad phase where their new paths leave their boxes
+        for (const label rod : {pair.first(), pair.second()})
+        {
+            for (const label bead : {rods_[rod].first(), rods_[rod].second()})
+            {
+                for (const label affected : beadRods_[bead])
+                {
+                    if (affected < 0)
+                    {
+                        continue;
+                    }
+                    const boundBox box = sweep(affected, now, deltaT);
+                    if (!sweptBox_[affected].contains(box))
+                    {
+                        sweptBox_[affected].add(box);
+                        insert(affected, sweptBox_[affected]);
+                    }
+                    for (const label pairi : rodPairs_[affected])
+                    {
+                        predict(pairi, now, deltaT);
+                    }
+                }
+            }
+        }
+    }
+
+    // x^{n+1}: the end of the paths, or the last uncrossed state
+    const scalar end = stalled ? now : deltaT;
+    for (label i = 0; i < nBeads; ++i)
+    {
+        x[i] = positionAt(i, end);
+    }
+
+    ++counters_.steps;
+    counters_.events += nEvents;
+    counters_.maxEventsPerStep = max(counters_.maxEventsPerStep, nEvents);
+    counters_.stalls += stalled;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,153 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "rodPairCrossing.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rodPairCrossing::rodPairCrossing
+(
+    const vector& xi, const vector& xi1,
+    const vector& xj, const vector& xj1,
+    const vector& vi, const vector& vi1,
+    const vector& vj, const vector& vj1
+)
+:
+    x({xi, xi1, xj, xj1}),
+    v({vi, vi1, vj, vj1})
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::FixedList<Foam::scalar, 4>
+Foam::rodPairCrossing::tripleProductCubic() const
+{
+    // V(s) = (p + dp s).((b + db s) x (c + dc s))
+    const vector p = x[0] - x[2];
+    const vector dp = v[0] - v[2];
+    const vector b = x[1] - x[0];
+    const vector db = v[1] - v[0];
+    const vector c = x[3] - x[2];
+    const vector dc = v[3] - v[2];
+
+    const vector bc = b ^ c;
+    const vector bdc = b ^ dc;
+    const vector dbc = db ^ c;
+    const vector dbdc = db ^ dc;
+
+    return FixedList<scalar, 4>
+    ({
+        p & bc,
+        (dp & bc) + (p & (dbc + bdc)),
+        (dp & (dbc + bdc)) + (p & dbdc),
+        dp & dbdc
+    });
+}
+
+
+Foam::scalar Foam::rodPairCrossing::tripleProduct(const scalar s) const
+{
+    const vector p = (x[0] + s*v[0]) - (x[2] + s*v[2]);
+    const vector b = (x[1] + s*v[1]) - (x[0] + s*v[0]);
+    const vector c = (x[3] + s*v[3]) - (x[2] + s*v[2]);
+    return p & (b ^ c);
+}
+
+
+bool Foam::rodPairCrossing::intersection
+(
+    const scalar s,
+    scalar& lambdaI,
+    scalar& lambdaJ
+) const
+{
+    const vector xi = x[0] + s*v[0];
+    const vector xj = x[2] + s*v[2];
+    const vector b = (x[1] + s*v[1]) - xi;
+    const vector c = (x[3] + s*v[3]) - xj;
+    const vector w = xi - xj;
+
+    // Closest points of the lines xi + lambdaI b and xj + lambdaJ c
+    const scalar bb = b & b;
+    const scalar bc = b & c;
+    const scalar cc = c & c;
+    const scalar bw = b & w;
+    const scalar cw = c & w;
+    const scalar det = bb*cc - bc*bc;
+
+    if (det <= 1e-12*bb*cc)
+    {
+        return false;
+    }
+
+    lambdaI = (bc*cw - cc*bw)/det;
+    lambdaJ = (bb*cw - bc*bw)/det;
+    return true;
+}
+
+
+bool Foam::rodPairCrossing::crossesAt(const scalar s) const
+{
+    scalar lambdaI, lambdaJ;
+    return
+        intersection(s, lambdaI, lambdaJ)
+     && lambdaI >= 0 && lambdaI <= 1
+     && lambdaJ >= 0 && lambdaJ <= 1;
+}
+
+
+bool Foam::rodPairCrossing::elasticImpulse
+(
+    const scalar s,
+    FixedList<vector, 4>& velocitiesAfter
+) const
+{
+    scalar lambdaI, lambdaJ;
+    if (!intersection(s, lambdaI, lambdaJ))
+    {
+        return false;
+    }
+
+    const vector b = (x[1] + s*v[1]) - (x[0] + s*v[0]);
+    const vector c = (x[3] + s*v[3]) - (x[2] + s*v[2]);
+    const vector normal = b ^ c;
+    const scalar magNormal = mag(normal);
+    if (magNormal < VSMALL)
+    {
+        return false;
+    }
+    const vector n = normal/magNormal;
+
+    const scalar vi = v[0] & n;
+    const scalar vi1 = v[1] & n;
+    const scalar vj = v[2] & n;
+    const scalar vj1 = v[3] & n;
+
+    // The paper's solution of the conservation laws for equal masses
+    const scalar J =
+        (
+            -vi*(1 - lambdaI) - vi1*lambdaI
+          + vj*(1 - lambdaJ) + vj1*lambdaJ
+        )
+       /(1 - lambdaI*(1 - lambdaI) - lambdaJ*(1 - lambdaJ));
+
+    velocitiesAfter[0] = v[0] + J*(1 - lambdaI)*n;
+    velocitiesAfter[1] = v[1] + J*lambdaI*n;
+    velocitiesAfter[2] = v[2] - J*(1 - lambdaJ)*n;
+    velocitiesAfter[3] = v[3] - J*lambdaJ*n;
+
+    return true;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,196 @@
+/*---------------------------------------------------------------------------*\
+Description
+    SHAKE, RATTLE and newton on perturbed chains (open random walks and
+    trefoil rings): after correct() every rod has length a to the model's
+    tolerance and, for RATTLE and newton, no relative velocity along a rod
+    to velocityTolerance (the convergence criteria the models promise;
+    slack 1e-6 relative for the second-order difference between |s|^2 - a^2
+    and |s| - a). Corrections are internal (equal and opposite), so the
+    centre of mass and the momentum are unchanged (round-off: 1e-12).
+    With one iteration and large perturbations the failures are counted.
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "testHelpers.H"
+#include "constraintModel.H"
+#include "trefoil.H"
+#include <tuple>
+
+using namespace Foam;
+using namespace polymerCloudTest;
+
+namespace
+{
+
+const label nBeads = 20, nChains = 50;
+const scalar a = 1.5, m = 2, kT = 0.5, dt = 0.01;
+const scalar tolerance = 1e-10, velocityTolerance = 1e-10;
+
+// Chains with exact rods; returns x^n (copy of the positions)
+List<vector> makeChains
+(
+    polymerChains& chains,
+    const bool ring,
+    std::mt19937_64& gen
+)
+{
+    const List<point> knot = initialisationModels::trefoil::beads(nBeads, a, true);
+    for (label c = 0; c < nChains; ++c)
+    {
+        const point origin(10*c, 0, 0);
+        List<point> x;
+        if (ring)
+        {
+            x = knot;
+            for (point& p : x) p += origin;
+        }
+        else
+        {
+            x = randomWalk(nBeads, a, origin, gen);
+        }
+        chains.append(0, c, x, List<vector>(nBeads, Zero));
+    }
+    return List<vector>(chains.positions());
+}
+
+// Perturb positions by noise of size sigma (the step's x*) and give
+// thermal velocities (v*)
+void perturb(polymerChains& chains, const scalar sigma, std::mt19937_64& gen)
+{
+    for (vector& x : chains.positions()) x += gaussian(gen, sigma);
+    for (vector& v : chains.velocities()) v = gaussian(gen, std::sqrt(kT/m));
+}
+
+autoPtr<constraintModel> makeModel
+(
+    const word& model,
+    const word& directions,
+    const label maxIterations
+)
+{
+    dictionary coeffs;
+    coeffs.add("tolerance", tolerance);
+    coeffs.add("velocityTolerance", velocityTolerance);
+    coeffs.add("maxIterations", maxIterations);
+    coeffs.add("directions", directions);
+    coeffs.add("maxFailureReports", 2);
+    coeffs.add("failureAction", "subStep");
+    dictionary d;
+    d.add("constraint", model);
+    d.add(word(model + "Coeffs"), coeffs);
+    return constraintModel::New(d);
+}
+
+vector sum(const UList<vector>& list)
+{
+    vector s(Zero);
+    for (const vector& v : list) s += v;
+    return s;
+}
+
+typedef std::tuple<std::string, bool, std::string> constraintCase;
+
+class constraintProjection : public ::testing::TestWithParam<constraintCase> {};
+
+std::string caseName(const ::testing::TestParamInfo<constraintCase>& info)
+{
+    return std::get<0>(info.param) + (std::get<1>(info.param) ? "_ring_" : "_open_")
+        + std::get<2>(info.param);
+}
+
+} // End anonymous namespace
+
+
+// Perturbation 0.02 a (a step's displacement): rods to tolerance, rod
+// velocities to velocityTolerance, no failure, centre of mass and momentum
+// unchanged.
+TEST_P(constraintProjection, ReachesTolerances)
+{
+    const auto [model, ring, directions] = GetParam();
+    std::mt19937_64 gen(12345);
+
+    PtrList<chainType> types(oneType(nBeads, a, m, 1, kT, ring));
+    polymerChains chains(types);
+    const List<vector> positionsOld = makeChains(chains, ring, gen);
+    perturb(chains, 0.02*a, gen);
+
+    const vector centre = sum(chains.positions());
+    const vector momentum = sum(chains.velocities());
+
+    autoPtr<constraintModel> constraint = makeModel(model, directions, 1000);
+    constraint->correct(chains, positionsOld, dt, 0);
+
+    EXPECT_LE(chains.maxRodLengthError(), tolerance*(1 + 1e-6));
+    if (constraint->constrainsVelocities())
+    {
+        EXPECT_LE(maxRodVelocityError(chains), velocityTolerance*(1 + 1e-6));
+    }
+    EXPECT_EQ(constraint->count().failures, 0);
+    EXPECT_EQ(constraint->count().solves, (constraint->constrainsVelocities() ? 2 : 1)*nChains);
+
+    const scalar scale = chains.nBeads()*(10*nChains + nBeads*a);
+    EXPECT_LE(mag(sum(chains.positions()) - centre), 1e-12*scale);
+    EXPECT_LE
+    (
+        mag(sum(chains.velocities()) - momentum),
+        1e-12*chains.nBeads()*(std::sqrt(kT/m) + 0.02*a/dt)
+    );
+}
+
+
+// One iteration from a perturbation of 0.3 a cannot converge to 1e-10:
+// the failures are counted, not hidden.
+TEST_P(constraintProjection, CountsNonConvergence)
+{
+    const auto [model, ring, directions] = GetParam();
+    std::mt19937_64 gen(54321);
+
+    PtrList<chainType> types(oneType(nBeads, a, m, 1, kT, ring));
+    polymerChains chains(types);
+    const List<vector> positionsOld = makeChains(chains, ring, gen);
+    perturb(chains, 0.3*a, gen);
+
+    autoPtr<constraintModel> constraint = makeModel(model, directions, 1);
+    constraint->correct(chains, positionsOld, dt, 0);
+
+    EXPECT_GT(constraint->count().failures, 0);
+    EXPECT_GT(chains.maxRodLengthError(), tolerance);
+}
+
+// failureAction stop: a solve that does not converge is a FatalError.
+TEST_P(constraintProjection, StopsOnFailureWhenAsked)
+{
+    const auto [model, ring, directions] = GetParam();
+    std::mt19937_64 gen(777);
+
+    PtrList<chainType> types(oneType(nBeads, a, m, 1, kT, ring));
+    polymerChains chains(types);
+    const List<vector> positionsOld = makeChains(chains, ring, gen);
+    perturb(chains, 0.3*a, gen);
+
+    dictionary coeffs;
+    coeffs.add("maxIterations", 1);
+    coeffs.add("directions", directions);
+    coeffs.add("failureAction", "stop");
+    dictionary d;
+    d.add("constraint", model);
+    d.add(word(model + "Coeffs"), coeffs);
+    autoPtr<constraintModel> constraint = constraintModel::New(d);
+
+    EXPECT_THROW(constraint->correct(chains, positionsOld, dt, 0), Foam::error);
+}
+
+INSTANTIATE_TEST_SUITE_P
+(
+    constraint,
+    constraintProjection,
+    ::testing::Combine
+    (
+        ::testing::Values("SHAKE", "RATTLE", "newton"),
+        ::testing::Bool(),
+        ::testing::Values("start", "end")
+    ),
+    caseName
+);
+
+// ************************************************************************* //
