@@ -570,7 +570,9 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         << ", chains sub-stepped " << totalCounters_.subStepped << nl
         << "    rod-rod collisions " << totalCollisions_.events
         << " (max per step " << totalCollisions_.maxEventsPerStep
-        << "), event-loop stalls " << totalCollisions_.stalls << nl
+        << "), event-loop stalls " << totalCollisions_.stalls
+        << ", crossing-time solves " << totalCollisions_.pairChecks
+        << ", audited crossings " << totalCollisions_.auditCrossings << nl
         << "    beads " << nParcels() << ", outside the mesh "
         << nBeadsOutside() << nl;
 }

@@ -15,6 +15,8 @@ License
 #include "DynamicList.H"
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -53,11 +55,6 @@ inline vec at(const vec& a, const vec& b, const real t)
     return {a.x + t*(b.x - a.x), a.y + t*(b.y - a.y), a.z + t*(b.z - a.z)};
 }
 
-inline real bernsteinValue(const real b[4], const real t)
-{
-    const real s = 1 - t;
-    return s*s*s*b[0] + 3*s*s*t*b[1] + 3*s*t*t*b[2] + t*t*t*b[3];
-}
 
 } // End anonymous namespace
 
@@ -72,55 +69,87 @@ Foam::rodCrossingAudit::rodCrossingAudit(const List<labelPair>& rods)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-bool Foam::rodCrossingAudit::crosses
-(
-    const labelPair& a,
-    const labelPair& b,
-    const UList<point>& start,
-    const UList<point>& end,
-    scalar& fraction
-) const
+namespace
 {
-    const vec p0[4] =
-    {
-        toVec(start[a.first()]), toVec(start[a.second()]),
-        toVec(start[b.first()]), toVec(start[b.second()])
-    };
-    const vec p1[4] =
-    {
-        toVec(end[a.first()]), toVec(end[a.second()]),
-        toVec(end[b.first()]), toVec(end[b.second()])
-    };
 
-    // V(t) at t = 0, 1/3, 2/3, 1 determines the cubic; its Bernstein
-    // coefficients follow from these four values
-    real value[4];
-    for (int k = 0; k < 4; ++k)
+//- The four beads of a rod pair at time fraction t of a straight piece
+struct pairPiece
+{
+    vec p0[4];
+    vec p1[4];
+
+    real value(const real t) const
     {
-        const real t = real(k)/3;
         const vec xi = at(p0[0], p1[0], t);
         const vec xi1 = at(p0[1], p1[1], t);
         const vec xj = at(p0[2], p1[2], t);
         const vec xj1 = at(p0[3], p1[3], t);
-        value[k] = dot(xi - xj, cross(xi1 - xi, xj1 - xj));
+        return dot(xi - xj, cross(xi1 - xi, xj1 - xj));
     }
-    real coeffs[4] =
-    {
-        value[0],
-        (-5*value[0] + 18*value[1] - 9*value[2] + 2*value[3])/6,
-        (2*value[0] - 9*value[1] + 18*value[2] - 5*value[3])/6,
-        value[3]
-    };
 
-    // Depth-first subdivision, earliest interval first
+    //- Do the lines meet within both rods at t?
+    bool meetWithinRods(const real t) const
+    {
+        const vec xi = at(p0[0], p1[0], t);
+        const vec xj = at(p0[2], p1[2], t);
+        const vec u = at(p0[1], p1[1], t) - xi;
+        const vec w = at(p0[3], p1[3], t) - xj;
+        const vec d = xi - xj;
+        const real uu = dot(u, u), uw = dot(u, w), ww = dot(w, w);
+        const real det = uu*ww - uw*uw;
+        if (det <= 1e-18L*uu*ww)
+        {
+            return false;
+        }
+        const real li = (uw*dot(w, d) - ww*dot(u, d))/det;
+        const real lj = (uu*dot(w, d) - uw*dot(u, d))/det;
+        return li >= 0 && li <= 1 && lj >= 0 && lj <= 1;
+    }
+
+    //- Round-off scale of V: |b| |c| (|b| + |c|) times a small factor
+    real roundOff() const
+    {
+        const real b = std::sqrt(dot(p0[1] - p0[0], p0[1] - p0[0]));
+        const real c = std::sqrt(dot(p0[3] - p0[2], p0[3] - p0[2]));
+        return 1e-10L*b*c*(b + c);
+    }
+
+    //- Sign changes of V in (0, 1), in order: (fraction, sign after)
+    void roots(Foam::DynamicList<std::pair<real, int>>& found) const;
+};
+
+
+void pairPiece::roots(Foam::DynamicList<std::pair<real, int>>& found) const
+{
+    found.clear();
+
+    // V at t = 0, 1/3, 2/3, 1 determines the cubic and its Bernstein
+    // coefficients
+    const real v0 = value(0), v1 = value(real(1)/3);
+    const real v2 = value(real(2)/3), v3 = value(1);
+
     struct piece
     {
         real b[4];
         real t0, t1;
     };
-    DynamicList<piece> stack;
-    stack.append(piece{{coeffs[0], coeffs[1], coeffs[2], coeffs[3]}, 0, 1});
+    Foam::DynamicList<piece> stack;
+    stack.append
+    (
+        piece
+        {
+            {
+                v0,
+                (-5*v0 + 18*v1 - 9*v2 + 2*v3)/6,
+                (2*v0 - 9*v1 + 18*v2 - 5*v3)/6,
+                v3
+            },
+            0,
+            1
+        }
+    );
 
+    // Depth first, earliest piece first
     while (stack.size())
     {
         const piece p = stack.remove();
@@ -133,35 +162,13 @@ bool Foam::rodCrossingAudit::crosses
 
         if (p.t1 - p.t0 < 1e-13L)
         {
-            // A pass-through needs a sign change across the root
-            if (p.b[0]*p.b[3] > 0)
+            if ((p.b[0] < 0) != (p.b[3] < 0))
             {
-                continue;
-            }
-
-            const real t = (p.t0 + p.t1)/2;
-            const vec xi = at(p0[0], p1[0], t);
-            const vec xj = at(p0[2], p1[2], t);
-            const vec u = at(p0[1], p1[1], t) - xi;
-            const vec w = at(p0[3], p1[3], t) - xj;
-            const vec d = xi - xj;
-            const real uu = dot(u, u), uw = dot(u, w), ww = dot(w, w);
-            const real det = uu*ww - uw*uw;
-            if (det <= 1e-18L*uu*ww)
-            {
-                continue;
-            }
-            const real li = (uw*dot(w, d) - ww*dot(u, d))/det;
-            const real lj = (uu*dot(w, d) - uw*dot(u, d))/det;
-            if (li >= 0 && li <= 1 && lj >= 0 && lj <= 1)
-            {
-                fraction = scalar(t);
-                return true;
+                found.append({(p.t0 + p.t1)/2, p.b[3] < 0 ? -1 : 1});
             }
             continue;
         }
 
-        // de Casteljau at the midpoint
         const real* b = p.b;
         const real b01 = (b[0] + b[1])/2, b12 = (b[1] + b[2])/2;
         const real b23 = (b[2] + b[3])/2;
@@ -172,8 +179,73 @@ bool Foam::rodCrossingAudit::crosses
         stack.append(piece{{mid, b123, b23, b[3]}, tm, p.t1});
         stack.append(piece{{b[0], b01, b012, mid}, p.t0, tm});
     }
+}
 
-    return false;
+} // End anonymous namespace
+
+
+void Foam::rodCrossingAudit::checkPair
+(
+    const labelPair& a,
+    const labelPair& b,
+    const UList<List<point>>& path,
+    DynamicList<crossing>& found
+) const
+{
+    const label beads[4] = {a.first(), a.second(), b.first(), b.second()};
+
+    // The sign of V followed along the path; 0 while not yet definite
+    int lastSign = 0;
+    DynamicList<std::pair<real, int>> roots;
+
+    for (label k = 0; k + 1 < path.size(); ++k)
+    {
+        pairPiece piece;
+        for (int m = 0; m < 4; ++m)
+        {
+            piece.p0[m] = toVec(path[k][beads[m]]);
+            piece.p1[m] = toVec(path[k + 1][beads[m]]);
+        }
+        const real tolerance = piece.roundOff();
+        const real start = piece.value(0);
+        const real end = piece.value(1);
+
+        // A change of sign across a contact at the piece's start
+        if (std::abs(start) > tolerance)
+        {
+            const int sign = start < 0 ? -1 : 1;
+            if (lastSign && sign != lastSign && piece.meetWithinRods(0))
+            {
+                found.append(crossing{a, b, k, 0});
+            }
+            lastSign = sign;
+        }
+
+        piece.roots(roots);
+        for (const std::pair<real, int>& root : roots)
+        {
+            // Roots at a contact at either end are followed by the signs
+            if
+            (
+                (root.first < 1e-9L && std::abs(start) <= tolerance)
+             || (root.first > 1 - 1e-9L && std::abs(end) <= tolerance)
+            )
+            {
+                continue;
+            }
+            if (lastSign && root.second != lastSign)
+            {
+                if (piece.meetWithinRods(root.first))
+                {
+                    found.append
+                    (
+                        crossing{a, b, k, scalar(root.first)}
+                    );
+                }
+            }
+            lastSign = root.second;
+        }
+    }
 }
 
 
@@ -181,17 +253,19 @@ bool Foam::rodCrossingAudit::crosses
 
 Foam::List<Foam::rodCrossingAudit::crossing> Foam::rodCrossingAudit::check
 (
-    const UList<point>& start,
-    const UList<point>& end
+    const UList<List<point>>& path
 ) const
 {
+    // Boxes swept over the whole path
     List<boundBox> boxes(rods_.size());
     forAll(rods_, rodi)
     {
-        boxes[rodi] = boundBox(start[rods_[rodi].first()]);
-        boxes[rodi].add(start[rods_[rodi].second()]);
-        boxes[rodi].add(end[rods_[rodi].first()]);
-        boxes[rodi].add(end[rods_[rodi].second()]);
+        boxes[rodi] = boundBox(path[0][rods_[rodi].first()]);
+        for (const List<point>& configuration : path)
+        {
+            boxes[rodi].add(configuration[rods_[rodi].first()]);
+            boxes[rodi].add(configuration[rods_[rodi].second()]);
+        }
     }
 
     // Sweep along x: sort the boxes by their lower x bound
@@ -225,22 +299,30 @@ Foam::List<Foam::rodCrossingAudit::crossing> Foam::rodCrossingAudit::check
             const labelPair& rb = rods_[b];
             if
             (
-                ra.first() == rb.first() || ra.first() == rb.second()
-             || ra.second() == rb.first() || ra.second() == rb.second()
-             || !boxes[a].overlaps(boxes[b])
+                ra.first() != rb.first() && ra.first() != rb.second()
+             && ra.second() != rb.first() && ra.second() != rb.second()
+             && boxes[a].overlaps(boxes[b])
             )
             {
-                continue;
-            }
-            scalar fraction;
-            if (crosses(ra, rb, start, end, fraction))
-            {
-                found.append(crossing{ra, rb, fraction});
+                checkPair(ra, rb, path, found);
             }
         }
     }
 
     return List<crossing>(std::move(found));
+}
+
+
+Foam::List<Foam::rodCrossingAudit::crossing> Foam::rodCrossingAudit::check
+(
+    const UList<point>& start,
+    const UList<point>& end
+) const
+{
+    List<List<point>> path(2);
+    path[0] = start;
+    path[1] = end;
+    return check(path);
 }
 
 

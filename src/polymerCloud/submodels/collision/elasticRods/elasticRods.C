@@ -12,6 +12,7 @@ License
 
 #include "elasticRods.H"
 #include "checkedInput.H"
+#include "rodCrossingAudit.H"
 #include "addToRunTimeSelectionTable.H"
 
 #include <cmath>
@@ -80,6 +81,7 @@ Foam::collisionModels::elasticRods::elasticRods(const dictionary& dict)
             coeffDict_, "stallEvents", 100, 1, "<successive short events>"
         )
     ),
+    audit_(coeffDict_.getOrDefault<bool>("audit", false)),
     cellSize_(1)
 {}
 
@@ -234,6 +236,17 @@ void Foam::collisionModels::elasticRods::predict
     );
 
     const scalar s = rootSolver_->earliestCrossing(pair, dt - t);
+    ++counters_.pairChecks;
+
+    if (debug > 1 && s >= 0)
+    {
+        const FixedList<scalar, 4> c = pair.tripleProductCubic();
+        scalar li, lj;
+        pair.intersection(s, li, lj);
+        Pout<< "    predict pair " << rods_[pairs_[pairi].first()] << ' '
+            << rods_[pairs_[pairi].second()] << " from " << t << ": s " << s
+            << " V " << c << " lambda " << li << ' ' << lj << endl;
+    }
 
     if (s >= 0)
     {
@@ -243,7 +256,9 @@ void Foam::collisionModels::elasticRods::predict
             {
                 t + s,
                 pairi,
-                version_[a0] + version_[a1] + version_[b0] + version_[b1]
+                version_[a0] + version_[a1] + version_[b0] + version_[b1],
+                t,
+                s
             }
         );
     }
@@ -252,11 +267,11 @@ void Foam::collisionModels::elasticRods::predict
 
 bool Foam::collisionModels::elasticRods::resolve
 (
-    const label pairi,
-    const scalar t,
+    const event& e,
     UList<vector>& velocitiesDagger
 ) const
 {
+    const label pairi = e.pair;
     const label beads[4] =
     {
         rods_[pairs_[pairi].first()].first(),
@@ -265,10 +280,13 @@ bool Foam::collisionModels::elasticRods::resolve
         rods_[pairs_[pairi].second()].second()
     };
 
+    // The impact positions as the root solver evaluated them, on the
+    // not-yet-crossed side of the root
     for (const label bead : beads)
     {
-        position_[bead] = positionAt(bead, t);
-        beadTime_[bead] = t;
+        position_[bead] =
+            positionAt(bead, e.from) + e.offset*velocity_[bead];
+        beadTime_[bead] = e.time;
     }
 
     const rodPairCrossing pair
@@ -294,6 +312,39 @@ bool Foam::collisionModels::elasticRods::resolve
     }
 
     return true;
+}
+
+
+void Foam::collisionModels::elasticRods::snapshot(const scalar t) const
+{
+    List<point> positions(position_.size());
+    forAll(positions, i)
+    {
+        positions[i] = positionAt(i, t);
+    }
+    snapshots_.append(std::move(positions));
+}
+
+
+Foam::label Foam::collisionModels::elasticRods::auditStep
+(
+    const scalar time
+) const
+{
+    const List<rodCrossingAudit::crossing> found =
+        rodCrossingAudit(rods_).check(snapshots_);
+
+    for (const rodCrossingAudit::crossing& c : found)
+    {
+        WarningInFunction
+            << "Audit: rods (beads " << c.rodA << ") and (" << c.rodB
+            << ") crossed in the step to time " << time
+            << ", after event " << c.piece << " of the step" << endl;
+    }
+    const label nFound = found.size();
+
+    snapshots_.clear();
+    return nFound;
 }
 
 
@@ -372,6 +423,12 @@ void Foam::collisionModels::elasticRods::correct
         predict(pairi, 0, deltaT);
     }
 
+    if (audit_)
+    {
+        snapshots_.clear();
+        snapshot(0);
+    }
+
     // Multi-collision loop: earliest event first
     label nEvents = 0;
     label nShort = 0;
@@ -406,11 +463,24 @@ void Foam::collisionModels::elasticRods::correct
             break;
         }
 
-        if (!resolve(e.pair, now, vDagger))
+        if (audit_)
+        {
+            snapshot(now);
+        }
+
+        if (!resolve(e, vDagger))
         {
             continue;
         }
         ++nEvents;
+
+        if (debug)
+        {
+            Pout<< "elasticRods: event " << nEvents << " at " << now
+                << " rods " << rods_[pair.first()] << ' '
+                << rods_[pair.second()] << " snapshot "
+                << snapshots_.size() - 1 << endl;
+        }
 
         // Re-predict every pair of the rods through the four beads, and
         // grow the broad phase where their new paths leave their boxes
@@ -444,6 +514,12 @@ void Foam::collisionModels::elasticRods::correct
     for (label i = 0; i < nBeads; ++i)
     {
         x[i] = positionAt(i, end);
+    }
+
+    if (audit_)
+    {
+        snapshot(end);
+        counters_.auditCrossings += auditStep(time);
     }
 
     ++counters_.steps;

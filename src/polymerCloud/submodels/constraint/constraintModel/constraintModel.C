@@ -94,7 +94,8 @@ void Foam::constraintModel::reportFailure
             << stage << " constraint did not converge for chain "
             << chains.globalId(chaini) << " (" << chains.type(chaini).name()
             << ") at time " << time << ": residual " << residual
-            << " after " << iterations << " iterations; sub-stepping"
+            << " after " << iterations << " iterations"
+            << (stage == "Rod-length" ? "; sub-stepping the chain" : "")
             << endl;
 
         if (failuresReported_ + 1 == maxFailureReports_)
@@ -132,6 +133,10 @@ bool Foam::constraintModel::correctChain
         return false;
     }
 
+    // A velocity solve that stops short leaves a residual in the rods'
+    // relative velocities, not in their lengths; smaller steps would not
+    // help it (its convergence depends on the chain's shape), so it is
+    // reported and the step goes on
     iter = correctChainVelocities(chains, chaini, residual);
 
     if (iter != 0)
@@ -141,7 +146,6 @@ bool Foam::constraintModel::correctChain
     if (iter < 0)
     {
         reportFailure(chains, chaini, "Rod-velocity", time, residual, -iter);
-        return false;
     }
 
     return true;
