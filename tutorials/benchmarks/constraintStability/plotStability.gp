@@ -1,20 +1,20 @@
 # Largest stable time step per method and case (data/largest.dat, written
 # by summarise): one marker per method; bars up to the first unstable step.
-set terminal pngcairo size 1100,620 font "DejaVu Sans,12"
+set terminal pngcairo size 1300,650 font "DejaVu Sans,12"
 set output "stability.png"
-set title "Largest stable deltaT (exactOU; failureAction stop; maxIterations 20000, newton 50)"
+set title "Largest stable deltaT (markers) and smallest unstable deltaT tried (top of the bar)\nexactOU; failureAction stop; maxIterations 20000 (newton 50)"
 set ylabel "deltaT (reduced units; a = kT = 1)"
 set logscale y
 set format y "10^{%L}"
-set yrange [0.004:8]
+set yrange [0.004:30]
 set xrange [-0.6:6.6]
 set grid ytics lc rgb "#e0e0e0"
-set key outside right top
-set bmargin 6
-set xtics ("trefoil N=400\nzeta=10, m=1" 0, "extension N=100\nWi=34, zeta=10, m=1" 1, \
-           "quiescent N=100\nzeta=10, m=1" 2, "quiescent\nzeta=1, m=1" 3, \
-           "quiescent\nzeta=0.1, m=1" 4, "quiescent\nzeta=10, m=10" 5, \
-           "quiescent\nzeta=10, m=100" 6) scale 0 font ",10"
+set key inside left top Left reverse box opaque
+set bmargin 7
+set xtics ("(a) trefoil\nN=400, T=10\nzeta=10, m=1" 0, "(b) extension\nN=100, Wi=34, T=60\nzeta=10, m=1" 1, \
+           "(c) quiescent\nN=100, T=20\nzeta=10, m=1" 2, "(c)\nzeta=1\nm=1" 3, \
+           "(c)\nzeta=0.1\nm=1" 4, "(c)\nzeta=10\nm=10" 5, \
+           "(c)\nzeta=10\nm=100" 6) scale 0 font ",11"
 set style line 1 lc rgb "#b2182b" pt 7 ps 1.6
 set style line 2 lc rgb "#ef8a62" pt 5 ps 1.6
 set style line 3 lc rgb "#2166ac" pt 9 ps 1.8
@@ -25,9 +25,11 @@ m(s) = (s eq "SHAKE-start" ? 0 : s eq "SHAKE-end" ? 1 : s eq "RATTLE" ? 2 : \
         s eq "RATTLE-end" ? 3 : s eq "newton" ? 4 : 5)
 off(s) = (m(s) - 2.5)*0.12
 sel(s, v) = (strcol(3) eq s ? v : 1/0)
+names = "SHAKE-start SHAKE-end RATTLE RATTLE-end newton newton-end"
+titles = "SHAKE\\_start SHAKE\\_end RATTLE\\_start RATTLE\\_end newton\\_start newton\\_end"
 plot for [i=1:6] "data/largest.dat" \
-        using ($1 + (i - 3.5)*0.12):(sel(word("SHAKE-start SHAKE-end RATTLE RATTLE-end newton newton-end", i), $4)) \
-        with points ls i title word("SHAKE\\_start SHAKE\\_end RATTLE\\_start RATTLE\\_end newton\\_start newton\\_end", i), \
+        using ($1 + (i - 3.5)*0.13):(sel(word(names, i), $4)):($4):(strcol(5) eq "-" ? $4 : $5) \
+        with yerrorbars ls i lw 1.5 pt 0 notitle, \
      for [i=1:6] "data/largest.dat" \
-        using ($1 + (i - 3.5)*0.12):(sel(word("SHAKE-start SHAKE-end RATTLE RATTLE-end newton newton-end", i), $4)):($4):(strcol(5) eq "-" ? $4 : $5) \
-        with yerrorbars ls i pt -1 notitle
+        using ($1 + (i - 3.5)*0.13):(sel(word(names, i), $4)) \
+        with points ls i title word(titles, i)

@@ -12,6 +12,8 @@ License
 
 #include "polymerChains.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::polymerChains::polymerChains(const PtrList<chainType>& types)
@@ -54,6 +56,61 @@ void Foam::polymerChains::append
     chainTypeIndex_.append(typeIndex);
     globalChainId_.append(globalId);
     chainStart_.append(positions_.size());
+}
+
+
+Foam::label Foam::polymerChains::chainOf(const label beadi) const
+{
+    // The last chain whose first bead is at or before beadi
+    return
+        label
+        (
+            std::upper_bound
+            (
+                chainStart_.cbegin(), chainStart_.cend() - 1, beadi
+            )
+          - chainStart_.cbegin()
+        )
+      - 1;
+}
+
+
+void Foam::polymerChains::remove(const labelUList& chainIndices)
+{
+    boolList removed(nChains(), false);
+    for (const label c : chainIndices)
+    {
+        removed[c] = true;
+    }
+
+    label nKept = 0;
+    label nKeptBeads = 0;
+    for (label c = 0; c < nChains(); ++c)
+    {
+        if (removed[c])
+        {
+            continue;
+        }
+        const label first = start(c);
+        const label n = size(c);
+        for (label k = 0; k < n; ++k)
+        {
+            positions_[nKeptBeads + k] = positions_[first + k];
+            velocities_[nKeptBeads + k] = velocities_[first + k];
+        }
+        chainTypeIndex_[nKept] = chainTypeIndex_[c];
+        globalChainId_[nKept] = globalChainId_[c];
+        chainStart_[nKept] = nKeptBeads;
+        nKeptBeads += n;
+        ++nKept;
+    }
+
+    chainStart_[nKept] = nKeptBeads;
+    chainStart_.resize(nKept + 1);
+    chainTypeIndex_.resize(nKept);
+    globalChainId_.resize(nKept);
+    positions_.resize(nKeptBeads);
+    velocities_.resize(nKeptBeads);
 }
 
 

@@ -148,6 +148,10 @@ void Foam::polymerCloud::initialise()
     }
 
     checkRods(properties_.dictionary::name()/"subModels"/"initialisation");
+    if (flow_->solvesFlow() || wall_->active())
+    {
+        checkInsideMesh(properties_.dictionary::name()/"subModels");
+    }
     setThermalVelocities();
 }
 
@@ -209,11 +213,68 @@ void Foam::polymerCloud::checkRods(const fileName& origin) const
 }
 
 
+void Foam::polymerCloud::checkInsideMesh(const fileName& origin) const
+{
+    const List<vector>& x = chains_.positions();
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        {
+            if (mesh_.findCell(x[i]) < 0)
+            {
+                FatalIOErrorInFunction(properties_)
+                    << "Chain " << chains_.globalId(c) << " ("
+                    << chains_.type(c).name() << ") from " << origin
+                    << "/initialisation has bead " << i - chains_.start(c)
+                    << " at " << x[i] << ", outside the mesh" << nl
+                    << "    expected: every bead in the mesh when the flow is"
+                    << " solved or walls are modelled"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
 void Foam::polymerCloud::accumulateCounters()
 {
     intervalCounters_.add(constraint_->count());
     totalCounters_.add(constraint_->count());
     constraint_->resetCounters();
+}
+
+
+void Foam::polymerCloud::removeEscapedChains()
+{
+    const DynamicList<label>& beads = wall_->escapedBeads();
+    if (beads.empty())
+    {
+        return;
+    }
+
+    DynamicList<label> leaving;
+    for (const label bead : beads)
+    {
+        const label c = chains_.chainOf(bead);
+        if (!leaving.found(c))
+        {
+            leaving.append(c);
+        }
+    }
+
+    label nBeads = 0;
+    for (const label c : leaving)
+    {
+        nBeads += chains_.size(c);
+        Info<< name() << ": chain " << chains_.globalId(c) << " ("
+            << chains_.type(c).name() << ", " << chains_.size(c)
+            << " beads) left the domain at time "
+            << mesh_.time().value() << endl;
+    }
+
+    wall_->countEscaped(leaving.size(), nBeads);
+    chains_.remove(leaving);
+    wall_->clearEscaped();
 }
 
 
@@ -369,6 +430,7 @@ Foam::polymerCloud::polymerCloud
     totalCounters_(),
     intervalCollisions_(),
     totalCollisions_(),
+    totalWall_(),
     evolveSeconds_(0),
     beadSteps_(0)
 {
@@ -393,7 +455,7 @@ Foam::polymerCloud::polymerCloud
     integration_ = integrationModel::New(subModels);
     constraint_ = constraintModel::New(subModels);
     collision_ = collisionModel::New(subModels);
-    wall_ = wallModel::New(subModels);
+    wall_ = wallModel::New(subModels, mesh_);
 
     if (Pstream::parRun() && flow_->solvesFlow())
     {
@@ -483,11 +545,13 @@ void Foam::polymerCloud::evolve()
     accumulateCounters();
 
     // 3. Rod-rod collisions and bead-wall impacts
-    collision_->correct(chains_, positionsOld_, deltaT, time);
-    wall_->correct(chains_, positionsOld_, deltaT, time);
+    collision_->correct(chains_, positionsOld_, deltaT, time, wall_.get());
     intervalCollisions_.add(collision_->count());
     totalCollisions_.add(collision_->count());
     collision_->resetCounters();
+    removeEscapedChains();
+    totalWall_.add(wall_->count());
+    wall_->resetCounters();
 
     evolveSeconds_ += timer.cpuTimeIncrement();
     beadSteps_ += chains_.nBeads();
@@ -573,6 +637,10 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         << "), event-loop stalls " << totalCollisions_.stalls
         << ", crossing-time solves " << totalCollisions_.pairChecks
         << ", audited crossings " << totalCollisions_.auditCrossings << nl
+        << "    bead-wall rebounds " << totalWall_.rebounds
+        << ", chains that left the domain " << totalWall_.escapedChains
+        << " (" << totalWall_.escapedBeads << " beads)"
+        << ", beads stuck " << totalWall_.stuck << nl
         << "    beads " << nParcels() << ", outside the mesh "
         << nBeadsOutside() << nl;
 }

@@ -51,7 +51,7 @@ void Foam::cloudFunctions::chainStatistics::openFile()
     file_()
         << "# statistics of polymerCloud " << cloud_.name() << nl
         << "# time nChains Rg2 Ree2 kTkinetic kT rodError iterMean iterMax"
-        << " failures subStepped collisions stalls outside" << endl;
+        << " failures subStepped collisions stalls escaped outside" << endl;
 }
 
 
@@ -112,6 +112,7 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
             << cloud_.totalCounters().subStepped << ' '
             << cloud_.intervalCollisions().events << ' '
             << cloud_.totalCollisions().stalls << ' '
+            << cloud_.totalWall().escapedChains << ' '
             << nOutside << endl;
     }
 

@@ -222,15 +222,18 @@ void Foam::rodCrossingAudit::checkPair
         }
 
         piece.roots(roots);
+        real contact = -1;
         for (const std::pair<real, int>& root : roots)
         {
-            // Roots at a contact at either end are followed by the signs
+            // A root at a contact at either end is round-off about zero:
+            // the sign is followed across the contact instead
             if
             (
                 (root.first < 1e-9L && std::abs(start) <= tolerance)
              || (root.first > 1 - 1e-9L && std::abs(end) <= tolerance)
             )
             {
+                contact = root.first;
                 continue;
             }
             if (lastSign && root.second != lastSign)
@@ -244,6 +247,19 @@ void Foam::rodCrossingAudit::checkPair
                 }
             }
             lastSign = root.second;
+        }
+
+        // A change of sign across a contact at the piece's start, seen at
+        // its definite end
+        if (std::abs(end) > tolerance)
+        {
+            const int sign = end < 0 ? -1 : 1;
+            const real at = (contact >= 0) ? contact : 0;
+            if (lastSign && sign != lastSign && piece.meetWithinRods(at))
+            {
+                found.append(crossing{a, b, k, scalar(at)});
+            }
+            lastSign = sign;
         }
     }
 }

@@ -82,7 +82,8 @@ Foam::collisionModels::elasticRods::elasticRods(const dictionary& dict)
         )
     ),
     audit_(coeffDict_.getOrDefault<bool>("audit", false)),
-    cellSize_(1)
+    cellSize_(1),
+    wall_(nullptr)
 {}
 
 
@@ -258,10 +259,97 @@ void Foam::collisionModels::elasticRods::predict
                 pairi,
                 version_[a0] + version_[a1] + version_[b0] + version_[b1],
                 t,
-                s
+                s,
+                Zero,
+                -1
             }
         );
     }
+}
+
+
+void Foam::collisionModels::elasticRods::predictWall
+(
+    const label bead,
+    const scalar t,
+    const scalar dt
+) const
+{
+    wallModel::impact hit;
+    if
+    (
+        wall_->predict(positionAt(bead, t), velocity_[bead], dt - t, hit)
+    )
+    {
+        queue_.push
+        (
+            event
+            {
+                t + hit.time,
+                -1 - bead,
+                version_[bead],
+                t,
+                hit.time,
+                hit.normal,
+                hit.patch
+            }
+        );
+    }
+}
+
+
+void Foam::collisionModels::elasticRods::repredict
+(
+    const label bead,
+    const scalar t,
+    const scalar dt
+) const
+{
+    // Grow the broad phase where the new paths leave the rods' boxes
+    for (const label rod : beadRods_[bead])
+    {
+        if (rod < 0)
+        {
+            continue;
+        }
+        const boundBox box = sweep(rod, t, dt);
+        if (!sweptBox_[rod].contains(box))
+        {
+            sweptBox_[rod].add(box);
+            insert(rod, sweptBox_[rod]);
+        }
+        for (const label pairi : rodPairs_[rod])
+        {
+            predict(pairi, t, dt);
+        }
+    }
+
+    if (wall_)
+    {
+        predictWall(bead, t, dt);
+    }
+}
+
+
+void Foam::collisionModels::elasticRods::resolveWall
+(
+    const event& e,
+    UList<vector>& velocitiesDagger
+) const
+{
+    const label bead = -1 - e.pair;
+
+    position_[bead] = positionAt(bead, e.from) + e.offset*velocity_[bead];
+    beadTime_[bead] = e.time;
+
+    wall_->interact
+    (
+        bead,
+        wallModel::impact{e.offset, e.normal, e.patch},
+        velocity_[bead],
+        velocitiesDagger[bead]
+    );
+    ++version_[bead];
 }
 
 
@@ -356,6 +444,16 @@ void Foam::collisionModels::elasticRods::reportStall
     const label nEvents
 ) const
 {
+    if (pairi < 0)
+    {
+        WarningInFunction
+            << "Event loop stopped at time " << time << " after " << nEvents
+            << " events, the last a bead-wall impact of bead " << -1 - pairi
+            << ": the beads stay at the last uncrossed state of the step"
+            << endl;
+        return;
+    }
+
     WarningInFunction
         << "Rod-rod event loop stopped at time " << time << " after "
         << nEvents << " events, the last between chains "
@@ -374,9 +472,12 @@ void Foam::collisionModels::elasticRods::correct
     polymerChains& chains,
     const UList<vector>& positionsOld,
     const scalar deltaT,
-    const scalar time
+    const scalar time,
+    const wallModel* wall
 ) const
 {
+    wall_ = (wall && wall->active()) ? wall : nullptr;
+
     const label nBeads = chains.nBeads();
     List<vector>& x = chains.positions();
     List<vector>& vDagger = chains.velocities();
@@ -422,6 +523,13 @@ void Foam::collisionModels::elasticRods::correct
     {
         predict(pairi, 0, deltaT);
     }
+    if (wall_)
+    {
+        for (label bead = 0; bead < nBeads; ++bead)
+        {
+            predictWall(bead, 0, deltaT);
+        }
+    }
 
     if (audit_)
     {
@@ -440,16 +548,25 @@ void Foam::collisionModels::elasticRods::correct
         const event e = queue_.top();
         queue_.pop();
 
-        const labelPair& pair = pairs_[e.pair];
-        const label stamp =
-            version_[rods_[pair.first()].first()]
-          + version_[rods_[pair.first()].second()]
-          + version_[rods_[pair.second()].first()]
-          + version_[rods_[pair.second()].second()];
+        const bool wallEvent = (e.pair < 0);
+        label stamp = 0;
+        if (wallEvent)
+        {
+            stamp = version_[-1 - e.pair];
+        }
+        else
+        {
+            const labelPair& pair = pairs_[e.pair];
+            stamp =
+                version_[rods_[pair.first()].first()]
+              + version_[rods_[pair.first()].second()]
+              + version_[rods_[pair.second()].first()]
+              + version_[rods_[pair.second()].second()];
+        }
 
         if (stamp != e.stamp)
         {
-            // A bead of this pair has changed course since
+            // A bead of this event has changed course since
             continue;
         }
 
@@ -468,12 +585,20 @@ void Foam::collisionModels::elasticRods::correct
             snapshot(now);
         }
 
+        if (wallEvent)
+        {
+            resolveWall(e, vDagger);
+            repredict(-1 - e.pair, now, deltaT);
+            continue;
+        }
+
         if (!resolve(e, vDagger))
         {
             continue;
         }
         ++nEvents;
 
+        const labelPair& pair = pairs_[e.pair];
         if (debug)
         {
             Pout<< "elasticRods: event " << nEvents << " at " << now
@@ -482,29 +607,12 @@ void Foam::collisionModels::elasticRods::correct
                 << snapshots_.size() - 1 << endl;
         }
 
-        // Re-predict every pair of the rods through the four beads, and
-        // grow the broad phase where their new paths leave their boxes
+        // Re-predict every event of the four beads
         for (const label rod : {pair.first(), pair.second()})
         {
             for (const label bead : {rods_[rod].first(), rods_[rod].second()})
             {
-                for (const label affected : beadRods_[bead])
-                {
-                    if (affected < 0)
-                    {
-                        continue;
-                    }
-                    const boundBox box = sweep(affected, now, deltaT);
-                    if (!sweptBox_[affected].contains(box))
-                    {
-                        sweptBox_[affected].add(box);
-                        insert(affected, sweptBox_[affected]);
-                    }
-                    for (const label pairi : rodPairs_[affected])
-                    {
-                        predict(pairi, now, deltaT);
-                    }
-                }
+                repredict(bead, now, deltaT);
             }
         }
     }

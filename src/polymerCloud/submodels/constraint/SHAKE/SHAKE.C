@@ -59,7 +59,7 @@ Foam::constraintModels::SHAKE::SHAKE
     (
         checkedInput::labelAtLeastOrDefault
         (
-            coeffDict_, "maxIterations", 1000, 1, "<iteration cap>"
+            coeffDict_, "maxIterations", 10000, 1, "<iteration cap>"
         )
     ),
     directions_

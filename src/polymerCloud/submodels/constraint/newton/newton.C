@@ -102,6 +102,11 @@ Foam::label Foam::constraintModels::newton::correctChainLengths
 
     const scalar oneByDeltaT = 1/deltaT;
 
+    // Newton's iteration converges quadratically or not at all: a residual
+    // that grows three times running means there is no solution near
+    scalar previous = GREAT;
+    label nGrowing = 0;
+
     for (label iter = 0; iter <= maxIterations_; ++iter)
     {
         // Residuals and the Jacobian at the current positions
@@ -127,7 +132,9 @@ Foam::label Foam::constraintModels::newton::correctChainLengths
         {
             return max(iter, 1);
         }
-        if (iter == maxIterations_ || !system_.solve(ring))
+        nGrowing = (residual > previous) ? nGrowing + 1 : 0;
+        previous = residual;
+        if (nGrowing == 3 || iter == maxIterations_ || !system_.solve(ring))
         {
             return -max(iter, 1);
         }

@@ -37,7 +37,11 @@ Foam::initialisationModels::randomWalk::randomWalk
 )
 :
     initialisationModel(typeName, dict, mesh),
-    box_(coeffDict_.get<point>("min"), coeffDict_.get<point>("max"))
+    box_(coeffDict_.get<point>("min"), coeffDict_.get<point>("max")),
+    insideMesh_
+    (
+        coeffDict_.getOrDefault<bool>("insideMesh", mesh.nCells() > 1)
+    )
 {
     if (!box_.valid())
     {
@@ -56,20 +60,21 @@ Foam::List<Foam::point> Foam::initialisationModels::randomWalk::walk
 (
     const chainType& type,
     const label seed,
-    const label globalId
+    const label globalId,
+    const label attempt
 ) const
 {
     const chainNoise noise(seed, globalId);
     List<point> x(type.nBeads());
 
     scalar u[4];
-    noise.uniforms(0, 0, chainNoise::setUpStream, 0, u);
+    noise.uniforms(0, 0, chainNoise::setUpStream, attempt, u);
     x[0] = box_.min() + cmptMultiply(vector(u[0], u[1], u[2]), box_.span());
 
     for (label i = 1; i < x.size(); ++i)
     {
         // A uniform direction: cos(theta) uniform in (-1, 1)
-        noise.uniforms(0, i, chainNoise::setUpStream, 0, u);
+        noise.uniforms(0, i, chainNoise::setUpStream, attempt, u);
         const scalar cosTheta = 2*u[0] - 1;
         const scalar sinTheta = std::sqrt(max(1 - sqr(cosTheta), scalar(0)));
         const scalar phi = constant::mathematical::twoPi*u[1];
@@ -86,6 +91,22 @@ Foam::List<Foam::point> Foam::initialisationModels::randomWalk::walk
     }
 
     return x;
+}
+
+
+bool Foam::initialisationModels::randomWalk::inside
+(
+    const List<point>& x
+) const
+{
+    for (const point& p : x)
+    {
+        if (mesh_.findCell(p) < 0)
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 
@@ -128,7 +149,25 @@ void Foam::initialisationModels::randomWalk::create
         for (label n = 0; n < number; ++n)
         {
             const label globalId = chains.nChains();
-            const List<point> x = walk(type, seed, globalId);
+            List<point> x = walk(type, seed, globalId, 0);
+
+            for (label attempt = 1; insideMesh_ && !inside(x); ++attempt)
+            {
+                if (attempt == 1000)
+                {
+                    FatalIOErrorInFunction(coeffDict_)
+                        << "Chain " << globalId << " (" << type.name()
+                        << ") from " << coeffDict_.name() << " has beads"
+                        << " outside the mesh in 1000 random walks from the"
+                        << " box " << box_ << nl
+                        << "    expected: min and max of a box well inside"
+                        << " the mesh for chains of " << type.nBeads()
+                        << " beads"
+                        << exit(FatalIOError);
+                }
+                x = walk(type, seed, globalId, attempt);
+            }
+
             chains.append(typei, globalId, x, List<vector>(x.size(), Zero));
         }
     }

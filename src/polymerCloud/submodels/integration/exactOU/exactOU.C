@@ -133,17 +133,13 @@ void Foam::integrationModels::exactOU::integrateChain
 
     for (label i = first; i < chains.end(chaini); ++i)
     {
-        scalar a[4], b[4];
-        noise.normals
+        scalar xi[6];
+        noise.sixNormals
         (
-            timeIndex, i - first, chainNoise::stepStream0, subStepKey, a
+            timeIndex, i - first, chainNoise::stepStream0, subStepKey, xi
         );
-        noise.normals
-        (
-            timeIndex, i - first, chainNoise::stepStream1, subStepKey, b
-        );
-        const vector xi1(a[0], a[1], a[2]);
-        const vector xi2(a[3], b[0], b[1]);
+        const vector xi1(xi[0], xi[1], xi[2]);
+        const vector xi2(xi[3], xi[4], xi[5]);
 
         const vector relative = v[i] - u[i];
 

@@ -27,9 +27,9 @@ namespace wallModels
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::wallModels::noWall::noWall(const dictionary& dict)
+Foam::wallModels::noWall::noWall(const dictionary& dict, const fvMesh& mesh)
 :
-    wallModel(typeName, dict)
+    wallModel(typeName, dict, mesh)
 {}
 
 

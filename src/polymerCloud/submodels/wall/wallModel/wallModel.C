@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "wallModel.H"
+#include "wallPolyPatch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -20,17 +21,149 @@ namespace Foam
     defineRunTimeSelectionTable(wallModel, dictionary);
 }
 
+const Foam::Enum<Foam::wallModel::interactionType>
+Foam::wallModel::interactionTypeNames
+({
+    { interactionType::rebound, "rebound" },
+    { interactionType::escape, "escape" },
+    { interactionType::stick, "stick" },
+});
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::wallModel::wallModel
 (
     const word& type,
-    const dictionary& dict
+    const dictionary& dict,
+    const fvMesh& mesh
 )
 :
-    coeffDict_(dict.optionalSubDict(type + "Coeffs"))
-{}
+    coeffDict_(dict.optionalSubDict(type + "Coeffs")),
+    mesh_(mesh),
+    interaction_(mesh.boundaryMesh().size(), interactionType::escape),
+    escapedBeads_(),
+    counters_()
+{
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+
+    forAll(patches, patchi)
+    {
+        if (isA<wallPolyPatch>(patches[patchi]))
+        {
+            interaction_[patchi] = interactionType::rebound;
+        }
+    }
+
+    const dictionary* interactionDict =
+        coeffDict_.findDict("patchInteraction", keyType::LITERAL);
+
+    if (interactionDict)
+    {
+        for (const entry& e : *interactionDict)
+        {
+            const labelList matched =
+                patches.indices(e.keyword(), true);
+
+            if (matched.empty())
+            {
+                FatalIOErrorInFunction(*interactionDict)
+                    << "No patch matches '" << e.keyword() << "' in "
+                    << interactionDict->name() << nl
+                    << "    expected: <patch name or regex> <"
+                    << interactionTypeNames.sortedToc() << ">; with patches "
+                    << patches.names()
+                    << exit(FatalIOError);
+            }
+
+            const interactionType kind =
+                interactionTypeNames.get(e.keyword(), *interactionDict);
+            for (const label patchi : matched)
+            {
+                interaction_[patchi] = kind;
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::wallModel::interact
+(
+    const label bead,
+    const impact& hit,
+    vector& v,
+    vector& vDagger
+) const
+{
+    switch (interaction_[hit.patch])
+    {
+        case interactionType::rebound:
+        {
+            // Only a bead moving into the boundary turns back
+            const scalar normalSpeed = v & hit.normal;
+            if (normalSpeed < 0)
+            {
+                const vector change = -2*normalSpeed*hit.normal;
+                v += change;
+                vDagger += change;
+            }
+            ++counters_.rebounds;
+            break;
+        }
+        case interactionType::escape:
+        {
+            v = Zero;
+            escapedBeads_.append(bead);
+            break;
+        }
+        case interactionType::stick:
+        {
+            v = Zero;
+            vDagger = Zero;
+            ++counters_.stuck;
+            break;
+        }
+    }
+}
+
+
+void Foam::wallModel::correct
+(
+    polymerChains& chains,
+    const UList<vector>& positionsOld,
+    const scalar deltaT,
+    const scalar time
+) const
+{
+    List<vector>& x = chains.positions();
+    List<vector>& vDagger = chains.velocities();
+
+    forAll(x, i)
+    {
+        point position = positionsOld[i];
+        vector v = (x[i] - positionsOld[i])/deltaT;
+        scalar t = 0;
+
+        // A bead that keeps meeting the boundary within the step stays
+        // where it is after a hundred impacts
+        impact hit;
+        label nImpacts = 0;
+        while (t < deltaT && predict(position, v, deltaT - t, hit))
+        {
+            position += hit.time*v;
+            t += hit.time;
+            interact(i, hit, v, vDagger[i]);
+            if (++nImpacts == 100)
+            {
+                v = Zero;
+            }
+        }
+
+        x[i] = position + (deltaT - t)*v;
+    }
+}
 
 
 // ************************************************************************* //

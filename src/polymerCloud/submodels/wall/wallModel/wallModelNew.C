@@ -15,8 +15,11 @@ License
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::wallModel>
-Foam::wallModel::New(const dictionary& dict)
+Foam::autoPtr<Foam::wallModel> Foam::wallModel::New
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
 {
     const word modelType
     (
@@ -39,7 +42,7 @@ Foam::wallModel::New(const dictionary& dict)
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<wallModel>(cstrIter()(dict));
+    return autoPtr<wallModel>(cstrIter()(dict, mesh));
 }
 
 

@@ -13,6 +13,8 @@ License
 #include "newtonRoot.H"
 #include "addToRunTimeSelectionTable.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -76,8 +78,22 @@ Foam::scalar Foam::crossingRootSolvers::newtonRoot::earliestCrossing
         s = next;
     }
 
-    // The time on the not-yet-crossed side of the root
-    s = low;
+    // The converged time, moved back to the not-yet-crossed side of the
+    // root (a few representable times at most), else the bracket's end
+    const bool startNegative = pair.tripleProduct(0) < 0;
+    for (int k = 0; k < 64; ++k)
+    {
+        const scalar value = pair.tripleProduct(s);
+        if (value != 0 && (value < 0) == startNegative)
+        {
+            break;
+        }
+        s = std::nextafter(s, scalar(0));
+        if (k == 63 || s <= low)
+        {
+            s = low;
+        }
+    }
     return pair.crossesAt(s) ? s : -1;
 }
 

@@ -1,0 +1,183 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "levelSet.H"
+#include "wallDist.H"
+#include "fvcGrad.H"
+#include "emptyPolyPatch.H"
+#include "checkedInput.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace wallModels
+{
+    defineTypeNameAndDebug(levelSet, 0);
+    addToRunTimeSelectionTable(wallModel, levelSet, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::wallModels::levelSet::levelSet
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    wallModel(typeName, dict, mesh),
+    nSamples_
+    (
+        checkedInput::labelAtLeastOrDefault
+        (
+            coeffDict_, "nSamples", 4, 1, "<samples of a path per step>"
+        )
+    ),
+    search_(mesh),
+    distance_(wallDist::New(mesh).y()),
+    distanceGradient_("levelSetGradient", fvc::grad(distance_)),
+    interpolateDistance_(distance_),
+    interpolateGradient_(distanceGradient_)
+{}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::wallModels::levelSet::distanceAt
+(
+    const point& p,
+    label& cell
+) const
+{
+    cell = search_.findCell(p, cell);
+    if (cell < 0)
+    {
+        return -1;
+    }
+    return interpolateDistance_.interpolate(p, cell);
+}
+
+
+bool Foam::wallModels::levelSet::faceImpact
+(
+    const point& x,
+    const vector& v,
+    const scalar T,
+    impact& hit
+) const
+{
+    const vector path = T*v;
+    const scalar length = mag(path);
+
+    for (const pointIndexHit& h : search_.intersections(x, x + path))
+    {
+        const label facei = h.index();
+        const label patchi = mesh_.boundaryMesh().whichPatch(facei);
+        if (isA<emptyPolyPatch>(mesh_.boundaryMesh()[patchi]))
+        {
+            continue;
+        }
+        const vector area = mesh_.faceAreas()[facei];
+        const vector normal = -area/mag(area);
+        if ((v & normal) >= 0)
+        {
+            continue;
+        }
+        const scalar fraction = ((h.hitPoint() - x) & path)/sqr(length);
+        hit.time = T*max(fraction*(1 - 1e-9), scalar(0));
+        hit.normal = normal;
+        hit.patch = patchi;
+        return true;
+    }
+    return false;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::wallModels::levelSet::predict
+(
+    const point& x,
+    const vector& v,
+    const scalar T,
+    impact& hit
+) const
+{
+    if (mag(v)*T < VSMALL)
+    {
+        return false;
+    }
+
+    label cell = -1;
+    scalar before = 0;
+    scalar distanceBefore = distanceAt(x, cell);
+    if (distanceBefore < 0)
+    {
+        return faceImpact(x, v, T, hit);
+    }
+
+    for (label k = 1; k <= nSamples_; ++k)
+    {
+        const scalar s = T*k/nSamples_;
+        label sampleCell = cell;
+        const scalar d = distanceAt(x + s*v, sampleCell);
+
+        if (sampleCell < 0)
+        {
+            // Leaving the mesh: where, and through which patch, exactly
+            return faceImpact(x, v, T, hit);
+        }
+        if (d > 0)
+        {
+            before = s;
+            distanceBefore = d;
+            cell = sampleCell;
+            continue;
+        }
+
+        // Bisect the zero of the distance between before and s
+        scalar a = before, b = s;
+        for (int iter = 0; iter < 60 && b - a > 1e-12*T; ++iter)
+        {
+            const scalar middle = 0.5*(a + b);
+            label middleCell = cell;
+            const scalar dm = distanceAt(x + middle*v, middleCell);
+            if (dm > 0 && middleCell >= 0)
+            {
+                a = middle;
+                cell = middleCell;
+            }
+            else
+            {
+                b = middle;
+            }
+        }
+
+        const point p = x + a*v;
+        vector normal = interpolateGradient_.interpolate(p, cell);
+        normal = (mag(normal) > VSMALL) ? normal/mag(normal) : -v/mag(v);
+
+        hit.time = a;
+        hit.normal = normal;
+        const label facei = search_.findNearestBoundaryFace(p);
+        hit.patch = mesh_.boundaryMesh().whichPatch(facei);
+        return true;
+    }
+
+    return false;
+}
+
+
+// ************************************************************************* //
