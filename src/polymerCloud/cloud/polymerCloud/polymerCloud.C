@@ -432,7 +432,9 @@ Foam::polymerCloud::polymerCloud
     totalCollisions_(),
     totalWall_(),
     evolveSeconds_(0),
-    beadSteps_(0)
+    beadSteps_(0),
+    maxBeadsOutside_(0),
+    beadStepsOutside_(0)
 {
     // Keep the file's name for messages when given a dictionary read from it
     if (!properties.name().empty())
@@ -526,6 +528,8 @@ void Foam::polymerCloud::evolve()
 
     // 1. Unconstrained update in the fluid velocity and forces at x^n
     updateDrift();
+    maxBeadsOutside_ = max(maxBeadsOutside_, flow_->nBeadsOutside());
+    beadStepsOutside_ += flow_->nBeadsOutside();
     integration_->integrate
     (
         chains_,
@@ -642,7 +646,10 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         << " (" << totalWall_.escapedBeads << " beads)"
         << ", beads stuck " << totalWall_.stuck << nl
         << "    beads " << nParcels() << ", outside the mesh "
-        << nBeadsOutside() << nl;
+        << nBeadsOutside() << " (checked every step: at most "
+        << returnReduce(maxBeadsOutside_, maxOp<label>()) << " in a step, "
+        << returnReduce(beadStepsOutside_, sumOp<scalar>())
+        << " bead-steps in all)" << nl;
 }
 
 

@@ -55,6 +55,28 @@ void Foam::cloudFunctions::chainStatistics::openFile()
 }
 
 
+Foam::scalar Foam::cloudFunctions::chainStatistics::peculiarKineticEnergy
+(
+    const label chaini
+) const
+{
+    const polymerChains& chains = cloud_.chains();
+    const List<vector>& v = chains.velocities();
+    const List<vector>& u = cloud_.flow().beadVelocity();
+
+    // The solvent's velocity at x^n of the last step; right after chains
+    // left the domain the lists differ in size until the next step
+    const bool haveFluid = (u.size() == v.size());
+
+    scalar sum = 0;
+    for (label i = chains.start(chaini); i < chains.end(chaini); ++i)
+    {
+        sum += magSqr(haveFluid ? v[i] - u[i] : v[i]);
+    }
+    return 0.5*chains.type(chaini).beadMass()*sum;
+}
+
+
 void Foam::cloudFunctions::chainStatistics::writeLine()
 {
     const polymerChains& chains = cloud_.chains();
@@ -76,7 +98,7 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
             sumRee2 += chains.endToEndSqr(c);
             ++nOpen;
         }
-        twiceKinetic += 2*chains.kineticEnergy(c);
+        twiceKinetic += 2*peculiarKineticEnergy(c);
         dof += type.degreesOfFreedom();
         dofKT += type.degreesOfFreedom()*type.kT();
         rodError = max(rodError, chains.maxRodLengthError(c));

@@ -63,6 +63,7 @@ Foam::constraintModels::newton::newton(const dictionary& dict)
         )
     ),
     reference_(),
+    velocityStart_(),
     system_()
 {}
 
@@ -78,6 +79,48 @@ Foam::label Foam::constraintModels::newton::correctChainLengths
     scalar& residual
 ) const
 {
+    const label first = chains.start(chaini);
+    const label n = chains.size(chaini);
+
+    // x* itself: the end directions, and the state to retry from
+    reference_ = SubList<vector>(chains.positions(), n, first);
+    velocityStart_ = SubList<vector>(chains.velocities(), n, first);
+
+    if (directions_ == SHAKE::directionType::end)
+    {
+        return iterate(chains, chaini, reference_.cdata(), deltaT, residual);
+    }
+
+    const label iter = iterate
+    (
+        chains, chaini, positionsOld.cdata() + first, deltaT, residual
+    );
+    if (iter > 0)
+    {
+        return iter;
+    }
+
+    // The rods of x^n can be too far from those of x* for their directions
+    // to reach the lengths (a rod-rod collision in the last step can have
+    // bent them): retry along the rods of x*
+    SubList<vector>(chains.positions(), n, first) = reference_;
+    SubList<vector>(chains.velocities(), n, first) = velocityStart_;
+    const label retry =
+        iterate(chains, chaini, reference_.cdata(), deltaT, residual);
+
+    return (retry > 0) ? retry - iter : retry + iter;
+}
+
+
+Foam::label Foam::constraintModels::newton::iterate
+(
+    polymerChains& chains,
+    const label chaini,
+    const vector* rc,
+    const scalar deltaT,
+    scalar& residual
+) const
+{
     const chainType& type = chains.type(chaini);
     const label first = chains.start(chaini);
     const label n = type.nBeads();
@@ -87,12 +130,6 @@ Foam::label Foam::constraintModels::newton::correctChainLengths
 
     vector* x = chains.positions().data() + first;
     vector* v = chains.velocities().data() + first;
-    const vector* rc = positionsOld.cdata() + first;
-    if (directions_ == SHAKE::directionType::end)
-    {
-        reference_ = SubList<vector>(chains.positions(), n, first);
-        rc = reference_.cdata();
-    }
 
     system_.resize(nRods);
     UList<scalar>& lower = system_.lower();
@@ -102,9 +139,37 @@ Foam::label Foam::constraintModels::newton::correctChainLengths
 
     const scalar oneByDeltaT = 1/deltaT;
 
-    // Newton's iteration converges quadratically or not at all: a residual
-    // that grows three times running means there is no solution near
-    scalar previous = GREAT;
+    // Move the beads by alpha times the Newton step along the directions
+    auto shiftBy = [&](const scalar alpha)
+    {
+        for (label k = 0; k < nRods; ++k)
+        {
+            const label j = (k + 1 < n) ? k + 1 : 0;
+            const vector shift = alpha*step[k]*(rc[j] - rc[k]);
+            x[k] -= shift;
+            x[j] += shift;
+            v[k] -= oneByDeltaT*shift;
+            v[j] += oneByDeltaT*shift;
+        }
+    };
+
+    // Largest relative length error at the current positions
+    auto lengthResidual = [&]()
+    {
+        scalar largest = 0;
+        for (label k = 0; k < nRods; ++k)
+        {
+            const label j = (k + 1 < n) ? k + 1 : 0;
+            largest = max(largest, mag(magSqr(x[j] - x[k]) - a2));
+        }
+        return largest/(2*a2);
+    };
+
+    // Newton's iteration converges quadratically near the solution; far
+    // from it (large errors, as rod-rod collisions can leave) the step is
+    // halved until the residual falls. A residual that still grows three
+    // times running means there is no solution near.
+    scalar lastResidual = GREAT;
     label nGrowing = 0;
 
     for (label iter = 0; iter <= maxIterations_; ++iter)
@@ -114,16 +179,16 @@ Foam::label Foam::constraintModels::newton::correctChainLengths
         for (label k = 0; k < nRods; ++k)
         {
             const label j = (k + 1 < n) ? k + 1 : 0;
-            const label previous = (k > 0) ? k - 1 : nRods - 1;
-            const label next = (k + 1 < nRods) ? k + 1 : 0;
+            const label before = (k > 0) ? k - 1 : nRods - 1;
+            const label after = (k + 1 < nRods) ? k + 1 : 0;
 
             const vector s = x[j] - x[k];
             const scalar sigma = (s & s) - a2;
             residual = max(residual, mag(sigma));
 
             diagonal[k] = 4*(s & (rc[j] - rc[k]));
-            lower[k] = -2*(s & (rc[k] - rc[previous]));
-            upper[k] = -2*(s & (rc[(next + 1) % n] - rc[next]));
+            lower[k] = -2*(s & (rc[k] - rc[before]));
+            upper[k] = -2*(s & (rc[(after + 1) % n] - rc[after]));
             step[k] = -sigma;
         }
         residual /= 2*a2;
@@ -132,21 +197,23 @@ Foam::label Foam::constraintModels::newton::correctChainLengths
         {
             return max(iter, 1);
         }
-        nGrowing = (residual > previous) ? nGrowing + 1 : 0;
-        previous = residual;
+        nGrowing = (residual > lastResidual) ? nGrowing + 1 : 0;
+        lastResidual = residual;
         if (nGrowing == 3 || iter == maxIterations_ || !system_.solve(ring))
         {
             return -max(iter, 1);
         }
 
-        for (label k = 0; k < nRods; ++k)
+        scalar alpha = 1;
+        shiftBy(alpha);
+        for (int halving = 0; halving < 8; ++halving)
         {
-            const label j = (k + 1 < n) ? k + 1 : 0;
-            const vector shift = step[k]*(rc[j] - rc[k]);
-            x[k] -= shift;
-            x[j] += shift;
-            v[k] -= oneByDeltaT*shift;
-            v[j] += oneByDeltaT*shift;
+            if (lengthResidual() < residual)
+            {
+                break;
+            }
+            shiftBy(-0.5*alpha);
+            alpha *= 0.5;
         }
     }
 
