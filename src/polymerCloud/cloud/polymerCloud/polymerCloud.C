@@ -548,6 +548,20 @@ void Foam::polymerCloud::evolve()
     }
     accumulateCounters();
 
+    // The momentum the chains exchanged with the solvent (two-way): the
+    // constraint forces are internal, the collisions' and walls' to come
+    // are not exchanges with the solvent
+    if (flow_->twoWay())
+    {
+        flow_->depositMomentum
+        (
+            chains_,
+            velocitiesOld_,
+            forces_.empty() ? UList<vector>() : UList<vector>(force_),
+            deltaT
+        );
+    }
+
     // 3. Rod-rod collisions and bead-wall impacts
     collision_->correct(chains_, positionsOld_, deltaT, time, wall_.get());
     intervalCollisions_.add(collision_->count());

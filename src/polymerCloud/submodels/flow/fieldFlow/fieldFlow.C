@@ -13,6 +13,8 @@ License
 #include "fieldFlow.H"
 #include "volFields.H"
 #include "interpolation.H"
+#include "fvmSup.H"
+#include "checkedInput.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -43,8 +45,58 @@ Foam::flowModels::fieldFlow::fieldFlow
     ),
     search_(mesh),
     hostCell_(),
-    nOutside_(0)
-{}
+    nOutside_(0),
+    twoWay_
+    (
+        coeffDict_.getOrDefault<word>("coupling", "oneWay") == "twoWay"
+    ),
+    rho_
+    (
+        twoWay_
+      ? checkedInput::positiveScalar(coeffDict_, "rho", "<solvent density>")
+      : 1
+    ),
+    semiImplicit_(coeffDict_.getOrDefault<bool>("semiImplicit", true)),
+    momentumTransfer_
+    (
+        IOobject
+        (
+            "polymerMomentumTransfer",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh,
+        dimensionedVector(dimVelocity*dimVolume, Zero)
+    ),
+    momentumCoeff_
+    (
+        IOobject
+        (
+            "polymerMomentumCoeff",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh,
+        dimensionedScalar(dimVolume, Zero)
+    )
+{
+    const word coupling =
+        coeffDict_.getOrDefault<word>("coupling", "oneWay");
+    if (coupling != "oneWay" && coupling != "twoWay")
+    {
+        FatalIOErrorInFunction(coeffDict_)
+            << "Keyword 'coupling' in " << coeffDict_.name() << " is "
+            << coupling << nl
+            << "    expected: coupling <oneWay | twoWay>;"
+            << exit(FatalIOError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -83,6 +135,76 @@ void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
             beadVelocity_[i] = interpolator->interpolate(x[i], hostCell_[i]);
         }
     }
+}
+
+
+void Foam::flowModels::fieldFlow::depositMomentum
+(
+    const polymerChains& chains,
+    const UList<vector>& velocitiesOld,
+    const UList<vector>& force,
+    const scalar deltaT
+)
+{
+    momentumTransfer_.field() = Zero;
+    momentumCoeff_.field() = 0;
+
+    if (!twoWay_)
+    {
+        return;
+    }
+
+    const List<vector>& vStar = chains.velocities();
+
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        const chainType& type = chains.type(c);
+        const scalar m = type.beadMass();
+        const scalar coeff =
+            semiImplicit_ ? -m*std::expm1(-deltaT/type.inertialTime()) : 0;
+
+        for (label i = chains.start(c); i < chains.end(c); ++i)
+        {
+            const label celli = hostCell_[i];
+            if (celli < 0)
+            {
+                continue;
+            }
+
+            // What the solvent received: minus the beads' momentum change
+            // less what external forces gave them
+            vector transfer = -m*(vStar[i] - velocitiesOld[i]);
+            if (force.size())
+            {
+                transfer += force[i]*deltaT;
+            }
+
+            // The implicit part's explicit counterpart, at the bead's U
+            momentumTransfer_[celli] +=
+                (transfer + coeff*beadVelocity_[i])/rho_;
+            momentumCoeff_[celli] += coeff/rho_;
+        }
+    }
+}
+
+
+Foam::tmp<Foam::fvVectorMatrix> Foam::flowModels::fieldFlow::SU
+(
+    volVectorField& U
+) const
+{
+    const dimensionedScalar deltaT = mesh_.time().deltaT();
+    const volScalarField::Internal Vdt(mesh_.V()*deltaT);
+
+    if (!twoWay_)
+    {
+        return flowModel::SU(U);
+    }
+
+    // transfer = T0 - coeff u_bead: T0 - coeff U with U implicit
+    return
+        momentumTransfer_/Vdt
+      - fvm::Sp(momentumCoeff_/Vdt, U);
 }
 
 
