@@ -442,6 +442,11 @@ Foam::polymerCloud::polymerCloud
         properties_.dictionary::name() = properties.name();
     }
 
+    // Locating points builds the mesh's tet base points on first use, a
+    // collective operation: build them on every processor now, since only
+    // some processors hold chains
+    mesh_.tetBasePtIs();
+
     readChainTypes();
 
     const dictionary& subModels = checkedInput::subDict
