@@ -99,7 +99,7 @@ void Foam::polymerCloud::readForces(const dictionary& subModels)
 
     for (const word& name : names)
     {
-        forces_.append(forceModel::New(name, subModels));
+        forces_.append(forceModel::New(name, subModels, mesh_));
     }
 }
 

@@ -125,6 +125,13 @@ void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
         // Walk from the previous cell; a tree search when there is none
         hostCell_[i] = search_.findCell(x[i], hostCell_[i]);
 
+        // The walk can stop short beside non-convex or refined cells:
+        // then an exact search
+        if (hostCell_[i] < 0)
+        {
+            hostCell_[i] = search_.findCell(x[i], -1);
+        }
+
         if (hostCell_[i] < 0)
         {
             beadVelocity_[i] = Zero;

@@ -27,7 +27,7 @@ namespace forceModels
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::forceModels::fixman::fixman(const dictionary& dict)
+Foam::forceModels::fixman::fixman(const dictionary& dict, const fvMesh&)
 :
     forceModel(typeName, dict)
 {}

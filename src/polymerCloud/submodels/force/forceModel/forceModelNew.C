@@ -17,7 +17,8 @@ License
 Foam::autoPtr<Foam::forceModel> Foam::forceModel::New
 (
     const word& modelType,
-    const dictionary& dict
+    const dictionary& dict,
+    const fvMesh& mesh
 )
 {
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
@@ -33,7 +34,7 @@ Foam::autoPtr<Foam::forceModel> Foam::forceModel::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<forceModel>(cstrIter()(dict));
+    return autoPtr<forceModel>(cstrIter()(dict, mesh));
 }
 
 

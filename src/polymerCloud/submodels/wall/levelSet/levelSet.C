@@ -45,6 +45,13 @@ Foam::wallModels::levelSet::levelSet
             coeffDict_, "nSamples", 4, 1, "<samples of a path per step>"
         )
     ),
+    clearance_
+    (
+        checkedInput::positiveScalar
+        (
+            coeffDict_, "clearance", "<least distance of a bead from a wall>"
+        )
+    ),
     search_(mesh),
     distance_(wallDist::New(mesh).y()),
     distanceGradient_("levelSetGradient", fvc::grad(distance_)),
@@ -61,12 +68,18 @@ Foam::scalar Foam::wallModels::levelSet::distanceAt
     label& cell
 ) const
 {
-    cell = search_.findCell(p, cell);
+    const label seed = cell;
+    cell = search_.findCell(p, seed);
+    if (cell < 0 && seed >= 0)
+    {
+        // The walk can stop short beside non-convex or refined cells
+        cell = search_.findCell(p, -1);
+    }
     if (cell < 0)
     {
         return -1;
     }
-    return interpolateDistance_.interpolate(p, cell);
+    return interpolateDistance_.interpolate(p, cell) - clearance_;
 }
 
 

@@ -1,0 +1,119 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "electrophoretic.H"
+#include "fvm.H"
+#include "fvc.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace forceModels
+{
+    defineTypeNameAndDebug(electrophoretic, 0);
+    addToRunTimeSelectionTable(forceModel, electrophoretic, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::forceModels::electrophoretic::electrophoretic
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    forceModel(typeName, dict),
+    charge_(coeffDict_.get<scalar>("charge")),
+    potential_
+    (
+        IOobject
+        (
+            coeffDict_.getOrDefault<word>("field", "phiE"),
+            mesh.time().timeName(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh
+    ),
+    field_
+    (
+        IOobject
+        (
+            "E",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedVector(potential_.dimensions()/dimLength, Zero)
+    ),
+    interpolateField_(),
+    search_(mesh),
+    hostCell_()
+{
+    Info<< "electrophoretic: solving laplacian(" << potential_.name()
+        << ") = 0 for the electric field" << endl;
+
+    fvScalarMatrix laplace(fvm::laplacian(potential_));
+    laplace.solve();
+
+    field_ = -fvc::grad(potential_);
+
+    interpolateField_.reset(new interpolationCellPoint<vector>(field_));
+
+    Info<< "    |E| from " << gMin(mag(field_)().primitiveField())
+        << " to " << gMax(mag(field_)().primitiveField()) << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::forceModels::electrophoretic::addForce
+(
+    const polymerChains& chains,
+    UList<vector>& force
+) const
+{
+    const List<vector>& x = chains.positions();
+
+    if (hostCell_.size() != x.size())
+    {
+        hostCell_.setSize(x.size());
+        hostCell_ = -1;
+    }
+
+    forAll(x, i)
+    {
+        hostCell_[i] = search_.findCell(x[i], hostCell_[i]);
+
+        // The walk can stop short beside non-convex or refined cells:
+        // then an exact search
+        if (hostCell_[i] < 0)
+        {
+            hostCell_[i] = search_.findCell(x[i], -1);
+        }
+        if (hostCell_[i] >= 0)
+        {
+            force[i] +=
+                charge_*interpolateField_->interpolate(x[i], hostCell_[i]);
+        }
+    }
+}
+
+
+// ************************************************************************* //
