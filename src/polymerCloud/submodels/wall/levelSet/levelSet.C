@@ -14,6 +14,7 @@ License
 #include "wallDist.H"
 #include "fvcGrad.H"
 #include "emptyPolyPatch.H"
+#include "wallPolyPatch.H"
 #include "checkedInput.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -147,12 +148,10 @@ bool Foam::wallModels::levelSet::predict
         label sampleCell = cell;
         const scalar d = distanceAt(x + s*v, sampleCell);
 
-        if (sampleCell < 0)
-        {
-            // Leaving the mesh: where, and through which patch, exactly
-            return faceImpact(x, v, T, hit);
-        }
-        if (d > 0)
+        // A sample outside the mesh is behind the boundary too: the
+        // bisection below finds where the path leaves the clearance
+        // surface or the mesh, whichever comes first
+        if (sampleCell >= 0 && d > 0)
         {
             before = s;
             distanceBefore = d;
@@ -186,6 +185,14 @@ bool Foam::wallModels::levelSet::predict
         hit.normal = normal;
         const label facei = search_.findNearestBoundaryFace(p);
         hit.patch = mesh_.boundaryMesh().whichPatch(facei);
+
+        // The level set is the distance to the walls: at another patch
+        // (an outlet, say) the boundary's normal is its face's
+        if (!isA<wallPolyPatch>(mesh_.boundaryMesh()[hit.patch]))
+        {
+            const vector area = mesh_.faceAreas()[facei];
+            hit.normal = -area/mag(area);
+        }
         return true;
     }
 
