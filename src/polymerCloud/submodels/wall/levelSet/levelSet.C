@@ -13,7 +13,6 @@ License
 #include "levelSet.H"
 #include "wallDist.H"
 #include "fvcGrad.H"
-#include "emptyPolyPatch.H"
 #include "wallPolyPatch.H"
 #include "checkedInput.H"
 #include "addToRunTimeSelectionTable.H"
@@ -84,41 +83,6 @@ Foam::scalar Foam::wallModels::levelSet::distanceAt
 }
 
 
-bool Foam::wallModels::levelSet::faceImpact
-(
-    const point& x,
-    const vector& v,
-    const scalar T,
-    impact& hit
-) const
-{
-    const vector path = T*v;
-    const scalar length = mag(path);
-
-    for (const pointIndexHit& h : search_.intersections(x, x + path))
-    {
-        const label facei = h.index();
-        const label patchi = mesh_.boundaryMesh().whichPatch(facei);
-        if (isA<emptyPolyPatch>(mesh_.boundaryMesh()[patchi]))
-        {
-            continue;
-        }
-        const vector area = mesh_.faceAreas()[facei];
-        const vector normal = -area/mag(area);
-        if ((v & normal) >= 0)
-        {
-            continue;
-        }
-        const scalar fraction = ((h.hitPoint() - x) & path)/sqr(length);
-        hit.time = T*max(fraction*(1 - 1e-9), scalar(0));
-        hit.normal = normal;
-        hit.patch = patchi;
-        return true;
-    }
-    return false;
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 bool Foam::wallModels::levelSet::predict
@@ -139,7 +103,7 @@ bool Foam::wallModels::levelSet::predict
     scalar distanceBefore = distanceAt(x, cell);
     if (distanceBefore < 0)
     {
-        return faceImpact(x, v, T, hit);
+        return faceImpact(search_, x, v, T, hit);
     }
 
     for (label k = 1; k <= nSamples_; ++k)

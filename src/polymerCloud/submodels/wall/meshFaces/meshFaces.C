@@ -11,8 +11,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "meshFaces.H"
-#include "emptyPolyPatch.H"
-#include "processorPolyPatch.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -36,16 +34,8 @@ Foam::wallModels::meshFaces::meshFaces
 )
 :
     wallModel(typeName, dict, mesh),
-    search_(mesh),
-    solid_(mesh.boundaryMesh().size(), true)
-{
-    forAll(mesh.boundaryMesh(), patchi)
-    {
-        const polyPatch& patch = mesh.boundaryMesh()[patchi];
-        solid_[patchi] =
-            !isA<emptyPolyPatch>(patch) && !isA<processorPolyPatch>(patch);
-    }
-}
+    search_(mesh)
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -58,42 +48,7 @@ bool Foam::wallModels::meshFaces::predict
     impact& hit
 ) const
 {
-    const vector path = T*v;
-    const scalar length = mag(path);
-    if (length < VSMALL)
-    {
-        return false;
-    }
-
-    // All boundary faces the segment meets, nearest first
-    const List<pointIndexHit> hits = search_.intersections(x, x + path);
-
-    for (const pointIndexHit& h : hits)
-    {
-        const label facei = h.index();
-        const label patchi = mesh_.boundaryMesh().whichPatch(facei);
-        if (!solid_[patchi])
-        {
-            continue;
-        }
-
-        const vector area = mesh_.faceAreas()[facei];
-        const vector normal = -area/mag(area);
-
-        // Only a path that enters the face from the fluid side meets it
-        if ((v & normal) >= 0)
-        {
-            continue;
-        }
-
-        const scalar fraction = ((h.hitPoint() - x) & path)/sqr(length);
-        hit.time = T*max(fraction*(1 - 1e-9), scalar(0));
-        hit.normal = normal;
-        hit.patch = patchi;
-        return true;
-    }
-
-    return false;
+    return faceImpact(search_, x, v, T, hit);
 }
 
 

@@ -12,6 +12,8 @@ License
 
 #include "wallModel.H"
 #include "wallPolyPatch.H"
+#include "emptyPolyPatch.H"
+#include "processorPolyPatch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -84,6 +86,55 @@ Foam::wallModel::wallModel
             }
         }
     }
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+bool Foam::wallModel::faceImpact
+(
+    const meshSearch& search,
+    const point& x,
+    const vector& v,
+    const scalar T,
+    impact& hit
+) const
+{
+    const vector path = T*v;
+    const scalar length = mag(path);
+    if (length < VSMALL)
+    {
+        return false;
+    }
+
+    // All boundary faces the segment meets, nearest first
+    for (const pointIndexHit& h : search.intersections(x, x + path))
+    {
+        const label facei = h.index();
+        const label patchi = mesh_.boundaryMesh().whichPatch(facei);
+        const polyPatch& patch = mesh_.boundaryMesh()[patchi];
+        if (isA<emptyPolyPatch>(patch) || isA<processorPolyPatch>(patch))
+        {
+            continue;
+        }
+
+        const vector area = mesh_.faceAreas()[facei];
+        const vector normal = -area/mag(area);
+
+        // Only a path that enters the face from the fluid side meets it
+        if ((v & normal) >= 0)
+        {
+            continue;
+        }
+
+        const scalar fraction = ((h.hitPoint() - x) & path)/sqr(length);
+        hit.time = T*max(fraction*(1 - 1e-9), scalar(0));
+        hit.normal = normal;
+        hit.patch = patchi;
+        return true;
+    }
+
+    return false;
 }
 
 
