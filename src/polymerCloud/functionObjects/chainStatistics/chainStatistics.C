@@ -51,7 +51,8 @@ void Foam::cloudFunctions::chainStatistics::openFile()
     file_()
         << "# statistics of polymerCloud " << cloud_.name() << nl
         << "# time nChains Rg2 Ree2 kTkinetic kT rodError iterMean iterMax"
-        << " failures subStepped collisions stalls escaped outside" << endl;
+        << " failures subStepped collisions stalls escaped outside"
+        << " rodsOutside" << endl;
 }
 
 
@@ -74,6 +75,39 @@ Foam::scalar Foam::cloudFunctions::chainStatistics::peculiarKineticEnergy
         sum += magSqr(haveFluid ? v[i] - u[i] : v[i]);
     }
     return 0.5*chains.type(chaini).beadMass()*sum;
+}
+
+
+Foam::label Foam::cloudFunctions::chainStatistics::rodsOutside() const
+{
+    // Both beads of a rod can be in the fluid while the rod cuts a
+    // non-convex corner (a step, a post): its midpoint then lies outside
+    // the mesh. Counted where walls bound the chains.
+    if (!cloud_.wallsActive())
+    {
+        return 0;
+    }
+
+    const polymerChains& chains = cloud_.chains();
+    const List<vector>& x = chains.positions();
+    const fvMesh& mesh = cloud_.mesh();
+
+    label n = 0;
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        const label first = chains.start(c);
+        const label size = chains.size(c);
+        for (label k = 0; k < chains.type(c).nRods(); ++k)
+        {
+            const point middle =
+                0.5*(x[first + k] + x[first + (k + 1) % size]);
+            if (mesh.findCell(middle) < 0)
+            {
+                ++n;
+            }
+        }
+    }
+    return n;
 }
 
 
@@ -117,6 +151,7 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
     const polymerCloud::constraintCounters& interval =
         cloud_.intervalCounters();
     const label nOutside = cloud_.nBeadsOutside();
+    const label nRodsOutside = returnReduce(rodsOutside(), sumOp<label>());
 
     if (Pstream::master())
     {
@@ -135,7 +170,8 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
             << cloud_.intervalCollisions().events << ' '
             << cloud_.totalCollisions().stalls << ' '
             << cloud_.totalWall().escapedChains << ' '
-            << nOutside << endl;
+            << nOutside << ' '
+            << nRodsOutside << endl;
     }
 
     cloud_.resetIntervalCounters();
