@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fieldFlow.H"
+#include "locateBead.H"
 #include "volFields.H"
 #include "interpolation.H"
 #include "fvmSup.H"
@@ -122,15 +123,7 @@ void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
     nOutside_ = 0;
     forAll(x, i)
     {
-        // Walk from the previous cell; a tree search when there is none
-        hostCell_[i] = search_.findCell(x[i], hostCell_[i]);
-
-        // The walk can stop short beside non-convex or refined cells:
-        // then an exact search
-        if (hostCell_[i] < 0)
-        {
-            hostCell_[i] = search_.findCell(x[i], -1);
-        }
+        hostCell_[i] = locateBead(search_, x[i], hostCell_[i]);
 
         if (hostCell_[i] < 0)
         {

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "electrophoretic.H"
+#include "locateBead.H"
 #include "fvm.H"
 #include "fvc.H"
 #include "addToRunTimeSelectionTable.H"
@@ -99,14 +100,7 @@ void Foam::forceModels::electrophoretic::addForce
 
     forAll(x, i)
     {
-        hostCell_[i] = search_.findCell(x[i], hostCell_[i]);
-
-        // The walk can stop short beside non-convex or refined cells:
-        // then an exact search
-        if (hostCell_[i] < 0)
-        {
-            hostCell_[i] = search_.findCell(x[i], -1);
-        }
+        hostCell_[i] = locateBead(search_, x[i], hostCell_[i]);
         if (hostCell_[i] >= 0)
         {
             force[i] +=

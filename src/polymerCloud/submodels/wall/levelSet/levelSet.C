@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "levelSet.H"
+#include "locateBead.H"
 #include "wallDist.H"
 #include "fvcGrad.H"
 #include "wallPolyPatch.H"
@@ -68,13 +69,7 @@ Foam::scalar Foam::wallModels::levelSet::distanceAt
     label& cell
 ) const
 {
-    const label seed = cell;
-    cell = search_.findCell(p, seed);
-    if (cell < 0 && seed >= 0)
-    {
-        // The walk can stop short beside non-convex or refined cells
-        cell = search_.findCell(p, -1);
-    }
+    cell = locateBead(search_, p, cell);
     if (cell < 0)
     {
         return -1;
