@@ -544,6 +544,17 @@ void Foam::polymerCloud::evolve()
         seed_
     );
 
+    for (polymerCloudFunction& function : functions_)
+    {
+        function.postIntegrate
+        (
+            positionsOld_,
+            velocitiesOld_,
+            forces_.empty() ? UList<vector>() : UList<vector>(force_),
+            deltaT
+        );
+    }
+
     // 2. Rod lengths and rod velocities; failed chains are sub-stepped
     failedChains_.clear();
     constraint_->correct(chains_, positionsOld_, deltaT, time, failedChains_);
@@ -552,6 +563,11 @@ void Foam::polymerCloud::evolve()
         subStepChain(c, deltaT);
     }
     accumulateCounters();
+
+    for (polymerCloudFunction& function : functions_)
+    {
+        function.postConstrain(deltaT);
+    }
 
     // The momentum the chains exchanged with the solvent (two-way): the
     // constraint forces are internal, the collisions' and walls' to come

@@ -1,0 +1,185 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "polymerStress.H"
+#include "polymerCloud.H"
+#include "checkedInput.H"
+#include "OSspecific.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace cloudFunctions
+{
+    defineTypeNameAndDebug(polymerStress, 0);
+    addToRunTimeSelectionTable(polymerCloudFunction, polymerStress, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::cloudFunctions::polymerStress::standardErrorXY() const
+{
+    const label n = blockMeansXY_.size();
+    if (n < 2)
+    {
+        return 0;
+    }
+    scalar mean = 0;
+    for (const scalar m : blockMeansXY_)
+    {
+        mean += m;
+    }
+    mean /= n;
+    scalar var = 0;
+    for (const scalar m : blockMeansXY_)
+    {
+        var += sqr(m - mean);
+    }
+    return std::sqrt(var/(n - 1)/n);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cloudFunctions::polymerStress::polymerStress
+(
+    const word& name,
+    const dictionary& dict,
+    const polymerCloud& cloud
+)
+:
+    polymerCloudFunction(name, cloud),
+    start_(dict.getOrDefault<scalar>("start", 0)),
+    blockSteps_
+    (
+        checkedInput::labelAtLeastOrDefault
+        (
+            dict, "blockSteps", 1000, 1, "<steps per block>"
+        )
+    ),
+    interval_
+    (
+        checkedInput::labelAtLeastOrDefault
+        (
+            dict, "interval", 100, 1, "<steps between lines>"
+        )
+    ),
+    sum_(Zero),
+    nSteps_(0),
+    blockSum_(Zero),
+    blockN_(0),
+    blockMeansXY_(),
+    file_(),
+    positionsStar_()
+{
+    if (Pstream::master())
+    {
+        const Time& runTime = cloud.mesh().time();
+        const fileName dir
+        (
+            runTime.globalPath()/"postProcessing"/cloud.name()
+           /runTime.timeName()
+        );
+        mkDir(dir);
+        file_.reset(new OFstream(dir/"polymerStress.dat"));
+        file_().precision(10);
+        file_()
+            << "# polymer stress of " << cloud.name()
+            << " (Kramers, rod tensions; domain average, time average from "
+            << start_ << ")" << nl
+            << "# time tauXX tauYY tauZZ tauXY tauYZ tauXZ seXY steps"
+            << endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cloudFunctions::polymerStress::postIntegrate
+(
+    const UList<vector>& positionsOld,
+    const UList<vector>& velocitiesOld,
+    const UList<vector>& force,
+    const scalar deltaT
+)
+{
+    if (cloud_.mesh().time().value() > start_)
+    {
+        positionsStar_ = cloud_.chains().positions();
+    }
+}
+
+
+void Foam::cloudFunctions::polymerStress::postConstrain(const scalar deltaT)
+{
+    if (cloud_.mesh().time().value() <= start_)
+    {
+        return;
+    }
+
+    const polymerChains& chains = cloud_.chains();
+    const List<vector>& x = chains.positions();
+
+    symmTensor step(Zero);
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        const chainType& type = chains.type(c);
+        const scalar gamma = type.friction()/type.beadMass();
+        const scalar forcePerShift =
+            type.friction()/(deltaT + std::expm1(-gamma*deltaT)/gamma);
+
+        const vector centre = chains.centreOfMass(c);
+
+        for (label i = chains.start(c); i < chains.end(c); ++i)
+        {
+            const vector constraintForce =
+                forcePerShift*(x[i] - positionsStar_[i]);
+            step -= symm((x[i] - centre)*constraintForce);
+        }
+    }
+
+    reduce(step, sumOp<symmTensor>());
+    step /= gSum(cloud_.mesh().V());
+
+    sum_ += step;
+    ++nSteps_;
+    blockSum_ += step;
+    if (++blockN_ == blockSteps_)
+    {
+        blockMeansXY_.append(blockSum_.xy()/blockN_);
+        blockSum_ = Zero;
+        blockN_ = 0;
+    }
+}
+
+
+void Foam::cloudFunctions::polymerStress::postEvolve()
+{
+    if (!nSteps_ || nSteps_ % interval_ || !Pstream::master())
+    {
+        return;
+    }
+
+    const symmTensor mean = sum_/nSteps_;
+    file_()
+        << cloud_.mesh().time().value() << ' '
+        << mean.xx() << ' ' << mean.yy() << ' ' << mean.zz() << ' '
+        << mean.xy() << ' ' << mean.yz() << ' ' << mean.xz() << ' '
+        << standardErrorXY() << ' ' << nSteps_ << endl;
+}
+
+
+// ************************************************************************* //
