@@ -132,6 +132,9 @@ void Foam::cloudFunctions::polymerStress::postConstrain(const scalar deltaT)
 
     const polymerChains& chains = cloud_.chains();
     const List<vector>& x = chains.positions();
+    const List<vector>& v = chains.velocities();
+    const List<vector>& u = cloud_.flow().beadVelocity();
+    const bool haveFluid = (u.size() == v.size());
 
     symmTensor step(Zero);
     for (label c = 0; c < chains.nChains(); ++c)
@@ -148,6 +151,10 @@ void Foam::cloudFunctions::polymerStress::postConstrain(const scalar deltaT)
             const vector constraintForce =
                 forcePerShift*(x[i] - positionsStar_[i]);
             step -= symm((x[i] - centre)*constraintForce);
+
+            // The momentum the beads carry relative to the solvent
+            const vector peculiar = haveFluid ? v[i] - u[i] : v[i];
+            step -= type.beadMass()*sqr(peculiar);
         }
     }
 
