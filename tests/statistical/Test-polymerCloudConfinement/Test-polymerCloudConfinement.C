@@ -116,7 +116,8 @@ dictionary properties
     const label seed,
     const word& constraint,
     const bool fixman,
-    const boundBox& bb
+    const boundBox& bb,
+    const word& wallInteraction
 )
 {
     OStringStream os;
@@ -130,6 +131,8 @@ dictionary properties
         << "subModels {\n"
         << "    integration exactOU; constraint " << constraint << ";\n"
         << "    collision none; wall meshFaces; flow none;\n"
+        << "    meshFacesCoeffs { patchInteraction { walls "
+        << wallInteraction << "; } }\n"
         << "    forces (" << (fixman ? "fixman" : "") << ");\n"
         << "    initialisation randomWalk;\n"
         << "    randomWalkCoeffs { min (" << xMin << ' ' << yMin << ' '
@@ -184,6 +187,12 @@ int main(int argc, char *argv[])
     argList::addOption("constraint", "model", "newton (default) | RATTLE");
     argList::addBoolOption("noFixman", "without the Fixman potential");
 
+    argList::addOption
+    (
+        "wallInteraction",
+        "type",
+        "the walls' patchInteraction: rebound (default) | reject"
+    );
     argList::addBoolOption
     (
         "checkProfile",
@@ -216,13 +225,15 @@ int main(int argc, char *argv[])
     const label seed = args.getOrDefault<label>("seed", 1);
     const word constraint = args.getOrDefault<word>("constraint", "newton");
     const bool fixman = !args.found("noFixman");
+    const word wallInteraction =
+        args.getOrDefault<word>("wallInteraction", "rebound");
 
     const boundBox& bb = mesh.bounds();
     const scalar z0 = bb.min().z();
     const scalar h = bb.span().z();
     const scalar a = 1;
 
-    const std::string name = "stat.slit";
+    const std::string name = "stat.slit." + wallInteraction;
 
     // Exact freely jointed result
     const label M = 600*nBins;
@@ -292,7 +303,10 @@ int main(int argc, char *argv[])
     (
         "polymerCloud",
         mesh,
-        properties(nChainsWanted, N, seed, constraint, fixman, bb)
+        properties
+        (
+            nChainsWanted, N, seed, constraint, fixman, bb, wallInteraction
+        )
     );
     cloud.writeSummary(Info);
 

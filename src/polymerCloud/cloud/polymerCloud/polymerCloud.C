@@ -278,6 +278,39 @@ void Foam::polymerCloud::removeEscapedChains()
 }
 
 
+void Foam::polymerCloud::rejectChains()
+{
+    const DynamicList<label>& beads = wall_->rejectedBeads();
+    if (beads.empty())
+    {
+        return;
+    }
+
+    DynamicList<label> rejected;
+    for (const label bead : beads)
+    {
+        const label c = chains_.chainOf(bead);
+        if (!rejected.found(c))
+        {
+            rejected.append(c);
+        }
+    }
+
+    List<vector>& x = chains_.positions();
+    List<vector>& v = chains_.velocities();
+    for (const label c : rejected)
+    {
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        {
+            x[i] = positionsOld_[i];
+            v[i] = -velocitiesOld_[i];
+        }
+    }
+
+    wall_->clearRejected(rejected.size());
+}
+
+
 void Foam::polymerCloud::subStepChain
 (
     const label chaini,
@@ -464,6 +497,18 @@ Foam::polymerCloud::polymerCloud
     collision_ = collisionModel::New(subModels);
     wall_ = wallModel::New(subModels, mesh_);
 
+    if (wall_->rejects() && collision_->type() != "none")
+    {
+        FatalIOErrorInFunction(subModels)
+            << "A patch of " << subModels.name() << " rejects steps"
+            << " (patchInteraction reject) while collision is "
+            << collision_->type() << nl
+            << "    expected: collision none; with reject patches (a"
+            << " rejected chain returning to x^n could cross chains that"
+            << " moved)"
+            << exit(FatalIOError);
+    }
+
     if (Pstream::parRun() && flow_->solvesFlow())
     {
         FatalIOErrorInFunction(subModels)
@@ -588,6 +633,7 @@ void Foam::polymerCloud::evolve()
     intervalCollisions_.add(collision_->count());
     totalCollisions_.add(collision_->count());
     collision_->resetCounters();
+    rejectChains();
     removeEscapedChains();
     totalWall_.add(wall_->count());
     wall_->resetCounters();
@@ -679,7 +725,8 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         << "    bead-wall rebounds " << totalWall_.rebounds
         << ", chains that left the domain " << totalWall_.escapedChains
         << " (" << totalWall_.escapedBeads << " beads)"
-        << ", beads stuck " << totalWall_.stuck << nl
+        << ", beads stuck " << totalWall_.stuck
+        << ", chain steps rejected " << totalWall_.rejectedSteps << nl
         << "    beads " << nParcels() << ", outside the mesh "
         << nBeadsOutside() << " (checked every step: at most "
         << returnReduce(maxBeadsOutside_, maxOp<label>()) << " in a step, "

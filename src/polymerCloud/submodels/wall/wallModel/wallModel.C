@@ -29,6 +29,7 @@ Foam::wallModel::interactionTypeNames
     { interactionType::rebound, "rebound" },
     { interactionType::escape, "escape" },
     { interactionType::stick, "stick" },
+    { interactionType::reject, "reject" },
 });
 
 
@@ -45,6 +46,7 @@ Foam::wallModel::wallModel
     mesh_(mesh),
     interaction_(mesh.boundaryMesh().size(), interactionType::escape),
     escapedBeads_(),
+    rejectedBeads_(),
     counters_()
 {
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
@@ -174,6 +176,12 @@ void Foam::wallModel::interact
             v = Zero;
             vDagger = Zero;
             ++counters_.stuck;
+            break;
+        }
+        case interactionType::reject:
+        {
+            v = Zero;
+            rejectedBeads_.append(bead);
             break;
         }
     }
