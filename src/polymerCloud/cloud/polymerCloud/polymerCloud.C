@@ -152,15 +152,20 @@ void Foam::polymerCloud::initialise()
     {
         checkInsideMesh(properties_.dictionary::name()/"subModels");
     }
-    setThermalVelocities();
+    setThermalVelocities(0);
 }
 
 
-void Foam::polymerCloud::setThermalVelocities()
+void Foam::polymerCloud::setThermalVelocities(const label firstChain)
 {
     List<vector>& v = chains_.velocities();
 
-    for (label c = 0; c < chains_.nChains(); ++c)
+    // A direct solve of the rod velocities, whatever the dynamics' method:
+    // the iterative ones converge slowly on smooth starting shapes such as
+    // the trefoil
+    const constraintModels::newton projection(dictionary::null);
+
+    for (label c = firstChain; c < chains_.nChains(); ++c)
     {
         const chainType& type = chains_.type(c);
         const scalar thermalSpeed = std::sqrt(type.kT()/type.beadMass());
@@ -179,14 +184,12 @@ void Foam::polymerCloud::setThermalVelocities()
             );
             v[i] = thermalSpeed*vector(xi[0], xi[1], xi[2]);
         }
-    }
 
-    // A direct solve, whatever the dynamics' method: the iterative ones
-    // converge slowly on smooth starting shapes such as the trefoil
-    if (constraint_->constrainsVelocities())
-    {
-        const constraintModels::newton projection(dictionary::null);
-        projection.correctVelocities(chains_, mesh_.time().value());
+        if (constraint_->constrainsVelocities())
+        {
+            scalar residual;
+            projection.correctChainVelocities(chains_, c, residual);
+        }
     }
 }
 
@@ -458,6 +461,9 @@ Foam::polymerCloud::polymerCloud
     constraint_(),
     collision_(),
     wall_(),
+    injection_(),
+    nextChainId_(0),
+    nInjected_(0),
     functions_(),
     intervalCounters_(),
     totalCounters_(),
@@ -496,6 +502,7 @@ Foam::polymerCloud::polymerCloud
     constraint_ = constraintModel::New(subModels);
     collision_ = collisionModel::New(subModels);
     wall_ = wallModel::New(subModels, mesh_);
+    injection_ = injectionModel::New(subModels, mesh_);
 
     if (wall_->rejects() && collision_->type() != "none")
     {
@@ -535,6 +542,13 @@ Foam::polymerCloud::polymerCloud
             << " initialisation" << endl;
     }
 
+    label largestId = -1;
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        largestId = max(largestId, chains_.globalId(c));
+    }
+    nextChainId_ = returnReduce(largestId, maxOp<label>()) + 1;
+
     readCloudFunctions();
 
     // The starting configuration is part of the record (and of the VTK
@@ -572,6 +586,16 @@ void Foam::polymerCloud::evolve()
     const Time& runTime = mesh_.time();
     const scalar deltaT = runTime.deltaTValue();
     const scalar time = runTime.value();
+
+    // New chains fed in, with thermal velocities
+    const label nChainsBefore = chains_.nChains();
+    const label nNew =
+        injection_->inject(chains_, seed_, nextChainId_, time);
+    if (nNew)
+    {
+        setThermalVelocities(nChainsBefore);
+        nInjected_ += nNew;
+    }
 
     positionsOld_ = chains_.positions();
     velocitiesOld_ = chains_.velocities();
@@ -727,6 +751,8 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         << " (" << totalWall_.escapedBeads << " beads)"
         << ", beads stuck " << totalWall_.stuck
         << ", chain steps rejected " << totalWall_.rejectedSteps << nl
+        << "    chains injected " << returnReduce(nInjected_, sumOp<label>())
+        << nl
         << "    beads " << nParcels() << ", outside the mesh "
         << nBeadsOutside() << " (checked every step: at most "
         << returnReduce(maxBeadsOutside_, maxOp<label>()) << " in a step, "

@@ -59,17 +59,18 @@ Foam::initialisationModels::randomWalk::randomWalk
 Foam::List<Foam::point> Foam::initialisationModels::randomWalk::walk
 (
     const chainType& type,
+    const boundBox& box,
     const label seed,
     const label globalId,
     const label attempt
-) const
+)
 {
     const chainNoise noise(seed, globalId);
     List<point> x(type.nBeads());
 
     scalar u[4];
     noise.uniforms(0, 0, chainNoise::setUpStream, attempt, u);
-    x[0] = box_.min() + cmptMultiply(vector(u[0], u[1], u[2]), box_.span());
+    x[0] = box.min() + cmptMultiply(vector(u[0], u[1], u[2]), box.span());
 
     for (label i = 1; i < x.size(); ++i)
     {
@@ -96,17 +97,49 @@ Foam::List<Foam::point> Foam::initialisationModels::randomWalk::walk
 
 bool Foam::initialisationModels::randomWalk::inside
 (
+    const fvMesh& mesh,
     const List<point>& x
-) const
+)
 {
     for (const point& p : x)
     {
-        if (mesh_.findCell(p) < 0)
+        if (mesh.findCell(p) < 0)
         {
             return false;
         }
     }
     return true;
+}
+
+
+Foam::List<Foam::point> Foam::initialisationModels::randomWalk::walkInside
+(
+    const chainType& type,
+    const boundBox& box,
+    const label seed,
+    const label globalId,
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+{
+    List<point> x = walk(type, box, seed, globalId, 0);
+
+    for (label attempt = 1; !inside(mesh, x); ++attempt)
+    {
+        if (attempt == 1000)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Chain " << globalId << " (" << type.name()
+                << ") from " << dict.name() << " has beads outside the mesh"
+                << " in 1000 random walks from the box " << box << nl
+                << "    expected: min and max of a box well inside the mesh"
+                << " for chains of " << type.nBeads() << " beads"
+                << exit(FatalIOError);
+        }
+        x = walk(type, box, seed, globalId, attempt);
+    }
+
+    return x;
 }
 
 
@@ -149,24 +182,10 @@ void Foam::initialisationModels::randomWalk::create
         for (label n = 0; n < number; ++n)
         {
             const label globalId = chains.nChains();
-            List<point> x = walk(type, seed, globalId, 0);
-
-            for (label attempt = 1; insideMesh_ && !inside(x); ++attempt)
-            {
-                if (attempt == 1000)
-                {
-                    FatalIOErrorInFunction(coeffDict_)
-                        << "Chain " << globalId << " (" << type.name()
-                        << ") from " << coeffDict_.name() << " has beads"
-                        << " outside the mesh in 1000 random walks from the"
-                        << " box " << box_ << nl
-                        << "    expected: min and max of a box well inside"
-                        << " the mesh for chains of " << type.nBeads()
-                        << " beads"
-                        << exit(FatalIOError);
-                }
-                x = walk(type, seed, globalId, attempt);
-            }
+            const List<point> x =
+                insideMesh_
+              ? walkInside(type, box_, seed, globalId, mesh_, coeffDict_)
+              : walk(type, box_, seed, globalId, 0);
 
             chains.append(typei, globalId, x, List<vector>(x.size(), Zero));
         }

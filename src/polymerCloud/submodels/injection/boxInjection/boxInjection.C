@@ -1,0 +1,119 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "boxInjection.H"
+#include "randomWalk.H"
+#include "checkedInput.H"
+#include "addToRunTimeSelectionTable.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace injectionModels
+{
+    defineTypeNameAndDebug(boxInjection, 0);
+    addToRunTimeSelectionTable(injectionModel, boxInjection, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::injectionModels::boxInjection::boxInjection
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    injectionModel(typeName, dict, mesh),
+    chainTypeName_(coeffDict_.get<word>("chainType")),
+    box_(coeffDict_.get<point>("min"), coeffDict_.get<point>("max")),
+    rate_
+    (
+        checkedInput::positiveScalar
+        (
+            coeffDict_, "rate", "<chains per unit time>"
+        )
+    ),
+    start_(coeffDict_.getOrDefault<scalar>("start", 0)),
+    end_(coeffDict_.getOrDefault<scalar>("end", GREAT))
+{
+    if (!box_.valid())
+    {
+        FatalIOErrorInFunction(coeffDict_)
+            << "Keywords 'min' and 'max' in " << coeffDict_.name()
+            << " make an empty box" << nl
+            << "    expected: min (x y z); max (X Y Z); with X >= x, ..."
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::injectionModels::boxInjection::inject
+(
+    polymerChains& chains,
+    const label seed,
+    label& nextGlobalId,
+    const scalar time
+)
+{
+    // Chains due by the end of the step, and by its start: the difference
+    const scalar dt = mesh_.time().deltaTValue();
+    auto dueBy = [&](const scalar t)
+    {
+        return label(std::floor(rate_*(min(t, end_) - start_) + 1e-9));
+    };
+    const label nNew =
+        (time <= start_) ? 0 : dueBy(time) - max(dueBy(time - dt), label(0));
+
+    if (nNew <= 0 || !Pstream::master())
+    {
+        return 0;
+    }
+
+    label typei = -1;
+    forAll(chains.types(), i)
+    {
+        if (chains.types()[i].name() == chainTypeName_)
+        {
+            typei = i;
+        }
+    }
+    if (typei < 0)
+    {
+        FatalIOErrorInFunction(coeffDict_)
+            << "Unknown chain type '" << chainTypeName_ << "' for keyword"
+            << " 'chainType' in " << coeffDict_.name()
+            << exit(FatalIOError);
+    }
+    const chainType& type = chains.types()[typei];
+
+    for (label k = 0; k < nNew; ++k)
+    {
+        const List<point> x = initialisationModels::randomWalk::walkInside
+        (
+            type, box_, seed, nextGlobalId, mesh_, coeffDict_
+        );
+        chains.append(typei, nextGlobalId, x, List<vector>(x.size(), Zero));
+        ++nextGlobalId;
+    }
+
+    return nNew;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,40 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "noInjection.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace injectionModels
+{
+    defineTypeNameAndDebug(noInjection, 0);
+    addToRunTimeSelectionTable(injectionModel, noInjection, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::injectionModels::noInjection::noInjection
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    injectionModel(typeName, dict, mesh)
+{}
+
+
+// ************************************************************************* //
