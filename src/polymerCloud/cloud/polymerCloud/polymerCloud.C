@@ -204,7 +204,7 @@ void Foam::polymerCloud::checkRods(const fileName& origin) const
         {
             FatalIOErrorInFunction(properties_)
                 << "Chain " << chains_.globalId(c) << " ("
-                << chains_.type(c).name() << ") from " << origin
+                << chains_.type(c).name() << ") from " << origin.c_str()
                 << " has a rod whose length differs from rodLength "
                 << chains_.type(c).rodLength() << " by a relative " << error
                 << nl << "    expected: every rod of length rodLength to a"
@@ -227,7 +227,7 @@ void Foam::polymerCloud::checkInsideMesh(const fileName& origin) const
             {
                 FatalIOErrorInFunction(properties_)
                     << "Chain " << chains_.globalId(c) << " ("
-                    << chains_.type(c).name() << ") from " << origin
+                    << chains_.type(c).name() << ") from " << origin.c_str()
                     << "/initialisation has bead " << i - chains_.start(c)
                     << " at " << x[i] << ", outside the mesh" << nl
                     << "    expected: every bead in the mesh when the flow is"
