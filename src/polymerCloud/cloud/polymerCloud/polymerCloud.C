@@ -371,9 +371,12 @@ void Foam::polymerCloud::subStepChain
         << " (" << chains_.type(chaini).name() << ") at time "
         << runTime.value() << " did not converge in "
         << constraint_->maxSubSteps() << " sub-steps of the time step "
-        << deltaT << nl
-        << "    Reduce deltaT, raise maxSubSteps or maxIterations, or"
-        << " choose the newton constraint"
+        << deltaT << " (constraint " << constraint_->type() << ")" << nl
+        << "    The chain's state at the step's start may be too distorted"
+        << " (rod-rod collisions or wall rebounds in strong flow leave rod"
+        << " errors): reduce deltaT (maxCo), or raise maxSubSteps or"
+        << " maxIterations"
+        << (constraint_->type() == "newton" ? "" : ", or use newton")
         << exit(FatalError);
 }
 
