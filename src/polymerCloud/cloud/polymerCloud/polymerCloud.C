@@ -541,8 +541,10 @@ Foam::polymerCloud::polymerCloud
     {
         initialise();
         Info<< name() << ": created "
-            << returnReduce(chains_.nChains(), sumOp<label>()) << " chains with the " << subModels.get<word>("initialisation")
-            << " initialisation" << endl;
+            << returnReduce(chains_.nChains(), sumOp<label>())
+            << " chains with the "
+            << subModels.get<word>("initialisation") << " initialisation"
+            << endl;
     }
 
     label largestId = -1;

@@ -153,11 +153,17 @@ Foam::label Foam::knotDeterminant::compute
             // The strand nearer the viewer (larger depth) is over
             if (depthI > depthJ)
             {
-                crossings.append(diagramCrossing{double(j) + beta, double(i) + alpha});
+                crossings.append
+                (
+                    diagramCrossing{double(j) + beta, double(i) + alpha}
+                );
             }
             else
             {
-                crossings.append(diagramCrossing{double(i) + alpha, double(j) + beta});
+                crossings.append
+                (
+                    diagramCrossing{double(i) + alpha, double(j) + beta}
+                );
             }
         }
     }

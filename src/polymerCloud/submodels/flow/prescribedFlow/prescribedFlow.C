@@ -35,7 +35,10 @@ Foam::flowModels::prescribedFlow::prescribedFlow
 :
     flowModel(typeName, dict, mesh),
     U0_(coeffDict_.getOrDefault<vector>("U0", Zero)),
-    velocityGradient_(coeffDict_.getOrDefault<tensor>("velocityGradient", Zero)),
+    velocityGradient_
+    (
+        coeffDict_.getOrDefault<tensor>("velocityGradient", Zero)
+    ),
     origin_(coeffDict_.getOrDefault<point>("origin", Zero))
 {
     const scalar divergence = tr(velocityGradient_);
