@@ -49,6 +49,7 @@ Usage
 #include "IStringStream.H"
 #include "polymerCloud.H"
 #include "statisticalCheck.H"
+#include "evolveStep.H"
 #include <random>
 #include <vector>
 
@@ -350,19 +351,9 @@ int main(int argc, char *argv[])
     for (label step = 1; step <= nEquilibration + nSampling; ++step)
     {
         ++runTime;
-        try
+        std::string message;
+        if (!evolveStep(cloud, name, message))
         {
-            cloud.evolve();
-        }
-        catch (const Foam::error& err)
-        {
-            std::string msg = err.message();
-            std::replace(msg.begin(), msg.end(), '\n', ' ');
-            std::printf
-            (
-                "FAIL %s.run: FatalError at time %g: %s\n",
-                name.c_str(), runTime.value(), msg.c_str()
-            );
             return 1;
         }
         if (chains.nChains() != nc)

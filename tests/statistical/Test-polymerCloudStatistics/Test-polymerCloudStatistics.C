@@ -39,6 +39,7 @@ Usage
 #include "IStringStream.H"
 #include "polymerCloud.H"
 #include "statisticalCheck.H"
+#include "evolveStep.H"
 #include <regex>
 #include <vector>
 
@@ -262,15 +263,9 @@ int main(int argc, char *argv[])
     for (label step = 1; step <= nEquilibration + nSampling; ++step)
     {
         ++runTime;
-        try
+        std::string msg;
+        if (!evolveStep(cloud, name, msg))
         {
-            cloud.evolve();
-        }
-        catch (const Foam::error& err)
-        {
-            std::string msg = err.message();
-            Info<< nl << "FatalError at time " << runTime.value() << ": "
-                << msg.c_str() << nl << endl;
             std::smatch match;
             if (std::regex_search(msg, match, std::regex("chain ([0-9]+)")))
             {
@@ -280,13 +275,6 @@ int main(int argc, char *argv[])
                     if (chains.globalId(c) == id) describeChain(chains, c);
                 }
             }
-            std::replace(msg.begin(), msg.end(), '\n', ' ');
-            std::printf
-            (
-                "FAIL %s.run: FatalError at time %g: %s\n",
-                name.c_str(),
-                runTime.value(), msg.c_str()
-            );
             return 1;
         }
 

@@ -33,10 +33,8 @@ Foam::scalar Foam::crossingRootSolvers::bisection::earliestCrossing
     const scalar T
 ) const
 {
-    const scalar start = pair.tripleProduct(0);
-    const scalar end = pair.tripleProduct(T);
-
-    if (start*end >= 0)
+    scalar start, end;
+    if (!signChange(pair, T, start, end))
     {
         return -1;
     }

@@ -23,6 +23,20 @@ namespace Foam
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
+bool Foam::crossingRootSolver::signChange
+(
+    const rodPairCrossing& pair,
+    const scalar T,
+    scalar& valueStart,
+    scalar& valueEnd
+)
+{
+    valueStart = pair.tripleProduct(0);
+    valueEnd = pair.tripleProduct(T);
+    return valueStart*valueEnd < 0;
+}
+
+
 Foam::scalar Foam::crossingRootSolver::bisect
 (
     const rodPairCrossing& pair,

@@ -34,10 +34,8 @@ Foam::scalar Foam::crossingRootSolvers::cubic::earliestCrossing
     const scalar T
 ) const
 {
-    const scalar start = pair.tripleProduct(0);
-    const scalar end = pair.tripleProduct(T);
-
-    if (start*end >= 0)
+    scalar start, end;
+    if (!signChange(pair, T, start, end))
     {
         return -1;
     }

@@ -37,13 +37,12 @@ Foam::scalar Foam::crossingRootSolvers::newtonRoot::earliestCrossing
 {
     scalar low = 0;
     scalar high = T;
-    scalar valueLow = pair.tripleProduct(low);
-    const scalar valueHigh = pair.tripleProduct(high);
-
-    if (valueLow*valueHigh >= 0)
+    scalar valueLow, valueHigh;
+    if (!signChange(pair, T, valueLow, valueHigh))
     {
         return -1;
     }
+    const bool startNegative = valueLow < 0;
 
     const FixedList<scalar, 4> c = pair.tripleProductCubic();
     scalar s = valueLow/(valueLow - valueHigh)*T;
@@ -80,7 +79,6 @@ Foam::scalar Foam::crossingRootSolvers::newtonRoot::earliestCrossing
 
     // The converged time, moved back to the not-yet-crossed side of the
     // root (a few representable times at most), else the bracket's end
-    const bool startNegative = pair.tripleProduct(0) < 0;
     for (int k = 0; k < 64; ++k)
     {
         const scalar value = pair.tripleProduct(s);
