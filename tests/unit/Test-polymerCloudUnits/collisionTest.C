@@ -863,3 +863,67 @@ TEST(rodCrossingAudit, TouchAndContinueIsOneCrossing)
 
 
 // ************************************************************************* //
+
+
+// Periodic images: rod A (along y at x = 3.8) moves at +0.4 in x for one
+// unit of time, towards the cyclic plane x = 4; rod B (along z at
+// x = 0.1) is at rest. Only B's image across the period 4, at x = 4.1,
+// is in A's way (met at s = 0.75). Without the lattice there is no event;
+// with it one, the dumbbell impulse passes A's momentum to B (equal
+// masses, head-on), and at the end A is still on its side of B's image.
+TEST(rodCollision, ElasticRodsMeetsPeriodicImages)
+{
+    const scalar dt = 1;
+    const PtrList<chainType> types(oneType(2, 1, 1, 1, 1));
+    const List<vector> positionsOld
+    ({
+        vector(3.8, -0.5, 0), vector(3.8, 0.5, 0),
+        vector(0.1, 0, -0.5), vector(0.1, 0, 0.5)
+    });
+    const vector u(0.4, 0, 0);
+
+    for (const bool periodic : {false, true})
+    {
+        SCOPED_TRACE(periodic ? "with the lattice" : "without");
+        polymerChains chains(types);
+        chains.append
+        (
+            0, 0,
+            List<vector>({positionsOld[0] + dt*u, positionsOld[1] + dt*u}),
+            List<vector>({u, u})
+        );
+        chains.append
+        (
+            0, 1,
+            List<vector>({positionsOld[2], positionsOld[3]}),
+            List<vector>({Zero, Zero})
+        );
+
+        dictionary dict;
+        dict.add("collision", "elasticRods");
+        collisionModels::elasticRods model(dict);
+        if (periodic)
+        {
+            model.setLattice(List<vector>({vector(4, 0, 0)}));
+        }
+        model.correct(chains, positionsOld, dt, dt);
+
+        const List<vector>& x = chains.positions();
+        const List<vector>& v = chains.velocities();
+        if (!periodic)
+        {
+            EXPECT_EQ(model.count().events, 0);
+            EXPECT_NEAR(x[0].x(), 4.2, 1e-12);
+            continue;
+        }
+
+        EXPECT_EQ(model.count().events, 1);
+        EXPECT_EQ(model.count().stalls, 0);
+        EXPECT_NEAR(mag(v[0]) + mag(v[1]), 0, 1e-12);
+        EXPECT_NEAR(mag(v[2] - u), 0, 1e-12);
+        EXPECT_NEAR(mag(v[3] - u), 0, 1e-12);
+        EXPECT_LT(x[0].x(), 4.1);
+        EXPECT_NEAR(x[0].x(), 3.8 + 0.75*0.4, 1e-9);
+        EXPECT_NEAR(x[2].x(), 0.1 + 0.25*0.4, 1e-9);
+    }
+}

@@ -19,6 +19,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "wallModel.H"
+#include "periodicImages.H"
 #include "Time.H"
 #include "fvMesh.H"
 #include "IStringStream.H"
@@ -689,3 +690,51 @@ TEST(wallModels, levelSetMatchesExactOnGridWalls)
 
 
 // ************************************************************************* //
+
+
+// Cyclic patches carry a path on: in the channel periodic in x and y
+// (period 4) between walls at z = 0 and 3, a bead from (3.9, 3.5, 1.5)
+// with v = (1, 0.5, -1) leaves through x = 4 at s = 0.1, through y = 4 at
+// s = 1, and meets the wall z = 0 at s = 1.5 (levelSet: at its clearance,
+// s = 1.4), at the image (1.4, 0.25, 0) of its continuous position. A
+// path that crosses cyclic patches only has no impact; nor does a bead
+// beyond a cyclic plane (the continuous coordinates of a chain) moving
+// inside the period.
+TEST(wallModels, cyclicPatchesCarryPaths)
+{
+    const fvMesh* mesh = meshOf("periodicChannel");
+    ASSERT_TRUE(mesh);
+    const label walls = patchIndex(*mesh, "walls");
+    ASSERT_GE(walls, 0);
+
+    const periodicImages& periodic = periodicImages::New(*mesh);
+    ASSERT_TRUE(periodic.active());
+    EXPECT_EQ(periodic.lattice().size(), 2);
+    const point image1 = periodic.wrap(point(5.4, -0.75, 1));
+    const point image2 = periodic.wrap(point(-7.5, 9, 2));
+    EXPECT_NEAR(mag(image1 - point(1.4, 3.25, 1)), 0, 1e-12);
+    EXPECT_NEAR(mag(image2 - point(0.5, 1, 2)), 0, 1e-12);
+
+    for (const word& type : wallModelTypes)
+    {
+        SCOPED_TRACE(type);
+        autoPtr<wallModel> model = newWall(*mesh, type);
+
+        const point x(3.9, 3.5, 1.5);
+        const vector v(1, 0.5, -1);
+        wallModel::impact hit;
+        ASSERT_TRUE(model->predict(x, v, 2, hit));
+        const scalar tImpact = 1.5 - clearanceOf(type);
+        EXPECT_NEAR(hit.time, tImpact, 1e-8);
+        EXPECT_LE(hit.time, tImpact);
+        EXPECT_EQ(hit.patch, walls);
+        EXPECT_NEAR(mag(hit.normal - vector(0, 0, 1)), 0, 1e-6);
+
+        // Across cyclic patches only: no impact
+        EXPECT_FALSE(model->predict(x, vector(1, 0.5, 0.2), 2, hit));
+
+        // The same path from a continuous position two periods away
+        ASSERT_TRUE(model->predict(x + vector(8, -4, 0), v, 2, hit));
+        EXPECT_NEAR(hit.time, tImpact, 1e-8);
+    }
+}

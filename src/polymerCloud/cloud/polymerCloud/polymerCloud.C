@@ -223,7 +223,7 @@ void Foam::polymerCloud::checkInsideMesh(const fileName& origin) const
     {
         for (label i = chains_.start(c); i < chains_.end(c); ++i)
         {
-            if (mesh_.findCell(x[i]) < 0)
+            if (mesh_.findCell(periodic_.wrap(x[i])) < 0)
             {
                 FatalIOErrorInFunction(properties_)
                     << "Chain " << chains_.globalId(c) << " ("
@@ -311,6 +311,31 @@ void Foam::polymerCloud::rejectChains()
     }
 
     wall_->clearRejected(rejected.size());
+}
+
+
+void Foam::polymerCloud::wrapChains()
+{
+    if (!periodic_.active())
+    {
+        return;
+    }
+
+    List<vector>& x = chains_.positions();
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const label first = chains_.start(c);
+        const vector shift = periodic_.shift(x[first + chains_.size(c)/2]);
+        if (shift == vector::zero)
+        {
+            continue;
+        }
+        for (label i = first; i < chains_.end(c); ++i)
+        {
+            x[i] += shift;
+        }
+        ++periodicCrossings_;
+    }
 }
 
 
@@ -431,6 +456,7 @@ Foam::polymerCloud::polymerCloud
         ),
         properties
     ),
+    periodic_(periodicImages::New(mesh)),
     active_
     (
         properties_.optionalSubDict("solution")
@@ -473,6 +499,7 @@ Foam::polymerCloud::polymerCloud
     intervalCollisions_(),
     totalCollisions_(),
     totalWall_(),
+    periodicCrossings_(0),
     evolveSeconds_(0),
     beadSteps_(0),
     maxBeadsOutside_(0),
@@ -504,6 +531,7 @@ Foam::polymerCloud::polymerCloud
     integration_ = integrationModel::New(subModels);
     constraint_ = constraintModel::New(subModels);
     collision_ = collisionModel::New(subModels);
+    collision_->setLattice(periodic_.lattice());
     wall_ = wallModel::New(subModels, mesh_);
     injection_ = injectionModel::New(subModels, mesh_);
 
@@ -666,6 +694,7 @@ void Foam::polymerCloud::evolve()
     removeEscapedChains();
     totalWall_.add(wall_->count());
     wall_->resetCounters();
+    wrapChains();
 
     evolveSeconds_ += timer.cpuTimeIncrement();
     beadSteps_ += chains_.nBeads();
@@ -757,7 +786,8 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         << ", beads stuck " << totalWall_.stuck
         << ", chain steps rejected " << totalWall_.rejectedSteps << nl
         << "    chains injected " << returnReduce(nInjected_, sumOp<label>())
-        << nl
+        << ", chains carried across cyclic patches "
+        << returnReduce(periodicCrossings_, sumOp<label>()) << nl
         << "    beads " << nParcels() << ", outside the mesh "
         << nBeadsOutside() << " (checked every step: at most "
         << returnReduce(maxBeadsOutside_, maxOp<label>()) << " in a step, "

@@ -164,7 +164,7 @@ void Foam::polymerCloud::writePositions() const
     os  << x.size() << nl << token::BEGIN_LIST << nl;
     for (const point& p : x)
     {
-        os  << p << token::SPACE << mesh_.findCell(p) << nl;
+        os  << p << token::SPACE << mesh_.findCell(periodic_.wrap(p)) << nl;
     }
     os  << token::END_LIST << nl;
 

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "chainStatistics.H"
+#include "periodicImages.H"
 #include "polymerCloud.H"
 #include "checkedInput.H"
 #include "OSspecific.H"
@@ -91,6 +92,7 @@ Foam::label Foam::cloudFunctions::chainStatistics::rodsOutside() const
     const polymerChains& chains = cloud_.chains();
     const List<vector>& x = chains.positions();
     const fvMesh& mesh = cloud_.mesh();
+    const periodicImages& periodic = periodicImages::New(mesh);
 
     label n = 0;
     for (label c = 0; c < chains.nChains(); ++c)
@@ -101,7 +103,7 @@ Foam::label Foam::cloudFunctions::chainStatistics::rodsOutside() const
         {
             const point middle =
                 0.5*(x[first + k] + x[first + (k + 1) % size]);
-            if (mesh.findCell(middle) < 0)
+            if (mesh.findCell(periodic.wrap(middle)) < 0)
             {
                 ++n;
             }

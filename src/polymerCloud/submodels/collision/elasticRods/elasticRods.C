@@ -83,6 +83,8 @@ Foam::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     ),
     audit_(coeffDict_.getOrDefault<bool>("audit", false)),
     cellSize_(1),
+    imageShift_(),
+    imageCode_(),
     wall_(nullptr)
 {}
 
@@ -144,45 +146,97 @@ Foam::boundBox Foam::collisionModels::elasticRods::sweep
 }
 
 
-void Foam::collisionModels::elasticRods::addPair
+void Foam::collisionModels::elasticRods::buildImages() const
+{
+    // Every combination of -1, 0, +1 per lattice vector, zero first
+    imageShift_ = List<vector>(1, Zero);
+    imageCode_ = labelList(1, Zero);
+    label digit = 1;
+    for (const vector& t : lattice_)
+    {
+        const label n = imageShift_.size();
+        for (const label sign : {1, -1})
+        {
+            for (label k = 0; k < n; ++k)
+            {
+                imageShift_.append(imageShift_[k] + sign*t);
+                imageCode_.append(imageCode_[k] + sign*digit);
+            }
+        }
+        digit *= 5;
+    }
+}
+
+
+Foam::boundBox Foam::collisionModels::elasticRods::entryBox
 (
-    const label rodA,
-    const label rodB
+    const label entry
 ) const
 {
-    if (rodA == rodB)
+    const label nRods = rods_.size();
+    const boundBox& box = sweptBox_[entry % nRods];
+    const vector& shift = imageShift_[entry/nRods];
+    return boundBox(box.min() + shift, box.max() + shift);
+}
+
+
+void Foam::collisionModels::elasticRods::addPair
+(
+    const label entryA,
+    const label entryB
+) const
+{
+    const label nRods = rods_.size();
+    label rodA = entryA % nRods, rodB = entryB % nRods;
+    label imageA = entryA/nRods, imageB = entryB/nRods;
+    if (rodA > rodB)
     {
-        return;
+        std::swap(rodA, rodB);
+        std::swap(imageA, imageB);
     }
 
+    // The translation of the second rod relative to the first
+    const label code = imageCode_[imageB] - imageCode_[imageA];
     const labelPair& a = rods_[rodA];
     const labelPair& b = rods_[rodB];
     if
     (
-        a.first() == b.first() || a.first() == b.second()
-     || a.second() == b.first() || a.second() == b.second()
+        code == 0
+     && (
+            rodA == rodB
+         || a.first() == b.first() || a.first() == b.second()
+         || a.second() == b.first() || a.second() == b.second()
+        )
     )
     {
         // Rods sharing a bead always meet there: no crossing to detect
         return;
     }
+    if (rodA == rodB)
+    {
+        // A rod and its own image: never closer than a period
+        return;
+    }
 
+    // Codes of two images differ by -2..2 per lattice vector: 125 values
     const uint64_t key =
-        (uint64_t(min(rodA, rodB)) << 32) | uint64_t(max(rodA, rodB));
+        (uint64_t(rodA)*uint64_t(nRods) + uint64_t(rodB))*125u
+      + uint64_t(code + 62);
 
     if (pairSet_.insert(key).second)
     {
         const label pairi = pairs_.size();
         pairs_.append(labelPair(rodA, rodB));
+        pairShift_.append(imageShift_[imageB] - imageShift_[imageA]);
         rodPairs_[rodA].push_back(pairi);
         rodPairs_[rodB].push_back(pairi);
     }
 }
 
 
-void Foam::collisionModels::elasticRods::insert
+void Foam::collisionModels::elasticRods::insertEntry
 (
-    const label rod,
+    const label entry,
     const boundBox& box
 ) const
 {
@@ -202,17 +256,31 @@ void Foam::collisionModels::elasticRods::insert
                 std::vector<label>& cell = grid_[cellKey(i, j, k)];
                 for (const label other : cell)
                 {
-                    if (sweptBox_[other].overlaps(box))
+                    if (entryBox(other).overlaps(box))
                     {
-                        addPair(rod, other);
+                        addPair(entry, other);
                     }
                 }
-                if (cell.empty() || cell.back() != rod)
+                if (cell.empty() || cell.back() != entry)
                 {
-                    cell.push_back(rod);
+                    cell.push_back(entry);
                 }
             }
         }
+    }
+}
+
+
+void Foam::collisionModels::elasticRods::insert(const label rod) const
+{
+    // Images of a rod are inserted whatever their distance from the
+    // chains: the broad phase cost grows by the number of images on
+    // periodic meshes only
+    const label nRods = rods_.size();
+    forAll(imageShift_, image)
+    {
+        const label entry = rod + image*nRods;
+        insertEntry(entry, entryBox(entry));
     }
 }
 
@@ -228,11 +296,12 @@ void Foam::collisionModels::elasticRods::predict
     const label a1 = rods_[pairs_[pairi].first()].second();
     const label b0 = rods_[pairs_[pairi].second()].first();
     const label b1 = rods_[pairs_[pairi].second()].second();
+    const vector& shift = pairShift_[pairi];
 
     const rodPairCrossing pair
     (
         positionAt(a0, t), positionAt(a1, t),
-        positionAt(b0, t), positionAt(b1, t),
+        positionAt(b0, t) + shift, positionAt(b1, t) + shift,
         velocity_[a0], velocity_[a1], velocity_[b0], velocity_[b1]
     );
 
@@ -316,7 +385,7 @@ void Foam::collisionModels::elasticRods::repredict
         if (!sweptBox_[rod].contains(box))
         {
             sweptBox_[rod].add(box);
-            insert(rod, sweptBox_[rod]);
+            insert(rod);
         }
         for (const label pairi : rodPairs_[rod])
         {
@@ -377,10 +446,11 @@ bool Foam::collisionModels::elasticRods::resolve
         beadTime_[bead] = e.time;
     }
 
+    const vector& shift = pairShift_[pairi];
     const rodPairCrossing pair
     (
         position_[beads[0]], position_[beads[1]],
-        position_[beads[2]], position_[beads[3]],
+        position_[beads[2]] + shift, position_[beads[3]] + shift,
         velocity_[beads[0]], velocity_[beads[1]],
         velocity_[beads[2]], velocity_[beads[3]]
     );
@@ -509,13 +579,23 @@ void Foam::collisionModels::elasticRods::correct
     }
     cellSize_ = max(largest, VSMALL);
 
+    label nImages = 1;
+    for (label k = 0; k < lattice_.size(); ++k)
+    {
+        nImages *= 3;
+    }
+    if (imageShift_.size() != nImages)
+    {
+        buildImages();
+    }
     grid_.clear();
     pairs_.clear();
+    pairShift_.clear();
     pairSet_.clear();
     rodPairs_.assign(rods_.size(), std::vector<label>());
     forAll(rods_, rod)
     {
-        insert(rod, sweptBox_[rod]);
+        insert(rod);
     }
 
     queue_ = std::priority_queue<event>();

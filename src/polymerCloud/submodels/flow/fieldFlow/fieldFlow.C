@@ -45,6 +45,7 @@ Foam::flowModels::fieldFlow::fieldFlow
         coeffDict_.getOrDefault<word>("interpolation", "cellPoint")
     ),
     search_(mesh),
+    periodic_(periodicImages::New(mesh)),
     hostCell_(),
     nOutside_(0),
     twoWay_
@@ -123,7 +124,8 @@ void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
     nOutside_ = 0;
     forAll(x, i)
     {
-        hostCell_[i] = locateBead(search_, x[i], hostCell_[i]);
+        const point p = periodic_.wrap(x[i]);
+        hostCell_[i] = locateBead(search_, p, hostCell_[i]);
 
         if (hostCell_[i] < 0)
         {
@@ -132,7 +134,7 @@ void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
         }
         else
         {
-            beadVelocity_[i] = interpolator->interpolate(x[i], hostCell_[i]);
+            beadVelocity_[i] = interpolator->interpolate(p, hostCell_[i]);
         }
     }
 }

@@ -65,6 +65,7 @@ Foam::forceModels::electrophoretic::electrophoretic
     ),
     interpolateField_(),
     search_(mesh),
+    periodic_(periodicImages::New(mesh)),
     hostCell_()
 {
     Info<< "electrophoretic: solving laplacian(" << potential_.name()
@@ -100,11 +101,12 @@ void Foam::forceModels::electrophoretic::addForce
 
     forAll(x, i)
     {
-        hostCell_[i] = locateBead(search_, x[i], hostCell_[i]);
+        const point p = periodic_.wrap(x[i]);
+        hostCell_[i] = locateBead(search_, p, hostCell_[i]);
         if (hostCell_[i] >= 0)
         {
             force[i] +=
-                charge_*interpolateField_->interpolate(x[i], hostCell_[i]);
+                charge_*interpolateField_->interpolate(p, hostCell_[i]);
         }
     }
 }

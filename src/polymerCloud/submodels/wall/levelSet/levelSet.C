@@ -69,12 +69,13 @@ Foam::scalar Foam::wallModels::levelSet::distanceAt
     label& cell
 ) const
 {
-    cell = locateBead(search_, p, cell);
+    const point image = periodic_.wrap(p);
+    cell = locateBead(search_, image, cell);
     if (cell < 0)
     {
         return -1;
     }
-    return interpolateDistance_.interpolate(p, cell) - clearance_;
+    return interpolateDistance_.interpolate(image, cell) - clearance_;
 }
 
 
@@ -136,7 +137,7 @@ bool Foam::wallModels::levelSet::predict
             }
         }
 
-        const point p = x + a*v;
+        const point p = periodic_.wrap(x + a*v);
         vector normal = interpolateGradient_.interpolate(p, cell);
         normal = (mag(normal) > VSMALL) ? normal/mag(normal) : -v/mag(v);
 

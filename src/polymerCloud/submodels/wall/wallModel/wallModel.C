@@ -14,6 +14,7 @@ License
 #include "wallPolyPatch.H"
 #include "emptyPolyPatch.H"
 #include "processorPolyPatch.H"
+#include "cyclicPolyPatch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -44,6 +45,7 @@ Foam::wallModel::wallModel
 :
     coeffDict_(dict.optionalSubDict(type + "Coeffs")),
     mesh_(mesh),
+    periodic_(periodicImages::New(mesh)),
     interaction_(mesh.boundaryMesh().size(), interactionType::escape),
     escapedBeads_(),
     rejectedBeads_(),
@@ -102,38 +104,62 @@ bool Foam::wallModel::faceImpact
     impact& hit
 ) const
 {
-    const vector path = T*v;
-    const scalar length = mag(path);
-    if (length < VSMALL)
-    {
-        return false;
-    }
+    // The path is followed at its image inside the mesh, piece by piece
+    // between cyclic faces
+    point start = periodic_.wrap(x);
+    scalar elapsed = 0;
 
-    // All boundary faces the segment meets, nearest first
-    for (const pointIndexHit& h : search.intersections(x, x + path))
+    for (label piece = 0; piece < 64; ++piece)
     {
-        const label facei = h.index();
-        const label patchi = mesh_.boundaryMesh().whichPatch(facei);
-        const polyPatch& patch = mesh_.boundaryMesh()[patchi];
-        if (isA<emptyPolyPatch>(patch) || isA<processorPolyPatch>(patch))
+        const vector path = (T - elapsed)*v;
+        const scalar length = mag(path);
+        if (length < VSMALL)
         {
-            continue;
+            return false;
         }
 
-        const vector area = mesh_.faceAreas()[facei];
-        const vector normal = -area/mag(area);
+        bool crossed = false;
 
-        // Only a path that enters the face from the fluid side meets it
-        if ((v & normal) >= 0)
+        // All boundary faces the segment meets, nearest first
+        for (const pointIndexHit& h : search.intersections(start, start + path))
         {
-            continue;
+            const label facei = h.index();
+            const label patchi = mesh_.boundaryMesh().whichPatch(facei);
+            const polyPatch& patch = mesh_.boundaryMesh()[patchi];
+            if (isA<emptyPolyPatch>(patch) || isA<processorPolyPatch>(patch))
+            {
+                continue;
+            }
+
+            const vector area = mesh_.faceAreas()[facei];
+            const vector normal = -area/mag(area);
+
+            // Only a path that enters the face from the fluid side meets it
+            if ((v & normal) >= 0)
+            {
+                continue;
+            }
+
+            const scalar fraction = ((h.hitPoint() - start) & path)/sqr(length);
+
+            if (isA<cyclicPolyPatch>(patch))
+            {
+                start = h.hitPoint() + periodic_.translation(patchi);
+                elapsed += (T - elapsed)*fraction;
+                crossed = true;
+                break;
+            }
+
+            hit.time = elapsed + (T - elapsed)*max(fraction*(1 - 1e-9), 0.0);
+            hit.normal = normal;
+            hit.patch = patchi;
+            return true;
         }
 
-        const scalar fraction = ((h.hitPoint() - x) & path)/sqr(length);
-        hit.time = T*max(fraction*(1 - 1e-9), scalar(0));
-        hit.normal = normal;
-        hit.patch = patchi;
-        return true;
+        if (!crossed)
+        {
+            return false;
+        }
     }
 
     return false;
