@@ -706,6 +706,39 @@ void Foam::polymerCloud::evolve()
 }
 
 
+void Foam::polymerCloud::predictCoupling()
+{
+    const Time& runTime = mesh_.time();
+    const scalar deltaT = runTime.deltaTValue();
+
+    positionsOld_ = chains_.positions();
+    velocitiesOld_ = chains_.velocities();
+
+    // The same noise as the step proper (keyed by the time index), so the
+    // predictor differs from it by the flow only
+    updateDrift();
+    flow_->storePredictor();
+    integration_->integrate
+    (
+        chains_,
+        drift(),
+        deltaT,
+        runTime.timeIndex(),
+        seed_
+    );
+    flow_->depositMomentum
+    (
+        chains_,
+        velocitiesOld_,
+        forces_.empty() ? UList<vector>() : UList<vector>(force_),
+        deltaT
+    );
+
+    chains_.positions() = positionsOld_;
+    chains_.velocities() = velocitiesOld_;
+}
+
+
 void Foam::polymerCloud::writeSummary(Ostream& os) const
 {
     // Chains per type, over all processors

@@ -61,8 +61,7 @@ Foam::label Foam::constraintModels::RATTLE::correctChainVelocities
     const vector* x = chains.positions().cdata() + first;
     vector* v = chains.velocities().data() + first;
 
-    const scalar scale =
-        type.rodLength()*std::sqrt(type.kT()/type.beadMass());
+    const scalar scale = velocityScale(type, v, n, velocityTolerance_);
     const scalar absoluteTolerance = velocityTolerance_*scale;
 
     for (label iter = 1; iter <= maxIterations_; ++iter)

@@ -274,7 +274,7 @@ Foam::label Foam::constraintModels::newton::correctChainVelocities
         const label j = (k + 1 < n) ? k + 1 : 0;
         residual = max(residual, mag((x[j] - x[k]) & (v[j] - v[k])));
     }
-    residual /= type.rodLength()*std::sqrt(type.kT()/type.beadMass());
+    residual /= velocityScale(type, v, n, velocityTolerance_);
 
     return (solved && residual <= velocityTolerance_) ? 1 : -1;
 }

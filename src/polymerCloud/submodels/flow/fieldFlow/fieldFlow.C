@@ -59,6 +59,11 @@ Foam::flowModels::fieldFlow::fieldFlow
       : 1
     ),
     semiImplicit_(coeffDict_.getOrDefault<bool>("semiImplicit", true)),
+    predictorCorrector_
+    (
+        coeffDict_.getOrDefault<bool>("predictorCorrector", false)
+    ),
+    velocityStart_(),
     momentumTransfer_
     (
         IOobject
@@ -96,6 +101,35 @@ Foam::flowModels::fieldFlow::fieldFlow
             << "Keyword 'coupling' in " << coeffDict_.name() << " is "
             << coupling << nl
             << "    expected: coupling <oneWay | twoWay>;"
+            << exit(FatalIOError);
+    }
+
+    if (predictorCorrector_ && !twoWay_)
+    {
+        FatalIOErrorInFunction(coeffDict_)
+            << "Keyword 'predictorCorrector' in " << coeffDict_.name()
+            << " is true with coupling oneWay" << nl
+            << "    expected: coupling twoWay; with predictorCorrector true"
+            << " (a one-way flow does not depend on the chains)"
+            << exit(FatalIOError);
+    }
+
+    // OpenFOAM's CrankNicolson keeps the old time derivative between
+    // steps, which the second solve of a step corrupts
+    const word ddtU("ddt(" + UName_ + ")");
+    const ITstream& ddtScheme = mesh.ddtScheme(ddtU);
+    if
+    (
+        predictorCorrector_ && ddtScheme.size() && ddtScheme[0].isWord()
+     && ddtScheme[0].wordToken() == "CrankNicolson"
+    )
+    {
+        FatalIOErrorInFunction(mesh.schemesDict())
+            << "ddtSchemes " << ddtU << " is CrankNicolson in "
+            << mesh.schemesDict().name() << ", with predictorCorrector"
+            << " true in " << coeffDict_.name() << nl
+            << "    expected: Euler or backward with predictorCorrector"
+            << " (the flow is solved twice a step)"
             << exit(FatalIOError);
     }
 }
@@ -137,6 +171,21 @@ void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
             beadVelocity_[i] = interpolator->interpolate(p, hostCell_[i]);
         }
     }
+
+    // The corrector's flow: the mean of the step's start and the predicted
+    // end (beads injected since have no start value)
+    const label nStart = min(velocityStart_.size(), beadVelocity_.size());
+    for (label i = 0; i < nStart; ++i)
+    {
+        beadVelocity_[i] = 0.5*(velocityStart_[i] + beadVelocity_[i]);
+    }
+    velocityStart_.clear();
+}
+
+
+void Foam::flowModels::fieldFlow::storePredictor()
+{
+    velocityStart_ = beadVelocity_;
 }
 
 
