@@ -14,6 +14,8 @@ License
 #include "polymerCloud.H"
 #include "checkedInput.H"
 #include "OSspecific.H"
+#include "periodicImages.H"
+#include "locateBead.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -52,6 +54,69 @@ Foam::scalar Foam::cloudFunctions::polymerStress::standardErrorXY() const
 }
 
 
+Foam::autoPtr<Foam::volSymmTensorField>
+Foam::cloudFunctions::polymerStress::newField(const word& name) const
+{
+    const fvMesh& mesh = cloud_.mesh();
+    return autoPtr<volSymmTensorField>::New
+    (
+        IOobject
+        (
+            name,
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedSymmTensor(dimPressure, Zero)
+    );
+}
+
+
+void Foam::cloudFunctions::polymerStress::locateBeads()
+{
+    const List<vector>& x = cloud_.chains().positions();
+    const periodicImages& periodic = periodicImages::New(cloud_.mesh());
+
+    if (beadCell_.size() != x.size())
+    {
+        beadCell_.setSize(x.size());
+        beadCell_ = -1;
+    }
+    forAll(x, i)
+    {
+        beadCell_[i] = locateBead(search_(), periodic.wrap(x[i]), beadCell_[i]);
+    }
+}
+
+
+void Foam::cloudFunctions::polymerStress::addToFields
+(
+    const UList<symmTensor>& beadTerm
+)
+{
+    locateBeads();
+
+    const scalarField& V = cloud_.mesh().V();
+    symmTensorField& step = field_->primitiveFieldRef();
+    step = Zero;
+    forAll(beadTerm, i)
+    {
+        const label celli = beadCell_[i];
+        if (celli >= 0)
+        {
+            step[celli] += beadTerm[i]/V[celli];
+        }
+    }
+    field_->correctBoundaryConditions();
+
+    fieldSum_ += step;
+    fieldMean_->primitiveFieldRef() = fieldSum_/nSteps_;
+    fieldMean_->correctBoundaryConditions();
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::cloudFunctions::polymerStress::polymerStress
@@ -83,8 +148,22 @@ Foam::cloudFunctions::polymerStress::polymerStress
     blockN_(0),
     blockMeansXY_(),
     file_(),
-    positionsStar_()
+    positionsStar_(),
+    field_(),
+    fieldMean_(),
+    fieldSum_(),
+    search_(),
+    beadCell_()
 {
+    if (dict.getOrDefault<bool>("writeFields", true))
+    {
+        const word name(dict.getOrDefault<word>("field", "tauPolymer"));
+        field_ = newField(name);
+        fieldMean_ = newField(name + "Mean");
+        fieldSum_.setSize(cloud.mesh().nCells(), Zero);
+        search_.reset(new meshSearch(cloud.mesh()));
+    }
+
     if (Pstream::master())
     {
         const Time& runTime = cloud.mesh().time();
@@ -136,6 +215,9 @@ void Foam::cloudFunctions::polymerStress::postConstrain(const scalar deltaT)
     const List<vector>& u = cloud_.flow().beadVelocity();
     const bool haveFluid = (u.size() == v.size());
 
+    // Each bead's term, kept for the per-cell fields
+    List<symmTensor> beadTerm(field_ ? x.size() : 0);
+
     symmTensor step(Zero);
     for (label c = 0; c < chains.nChains(); ++c)
     {
@@ -150,11 +232,18 @@ void Foam::cloudFunctions::polymerStress::postConstrain(const scalar deltaT)
         {
             const vector constraintForce =
                 forcePerShift*(x[i] - positionsStar_[i]);
-            step -= symm((x[i] - centre)*constraintForce);
 
             // The momentum the beads carry relative to the solvent
             const vector peculiar = haveFluid ? v[i] - u[i] : v[i];
-            step -= type.beadMass()*sqr(peculiar);
+
+            const symmTensor term =
+              - symm((x[i] - centre)*constraintForce)
+              - type.beadMass()*sqr(peculiar);
+            step += term;
+            if (field_)
+            {
+                beadTerm[i] = term;
+            }
         }
     }
 
@@ -163,6 +252,10 @@ void Foam::cloudFunctions::polymerStress::postConstrain(const scalar deltaT)
 
     sum_ += step;
     ++nSteps_;
+    if (field_)
+    {
+        addToFields(beadTerm);
+    }
     blockSum_ += step;
     if (++blockN_ == blockSteps_)
     {
