@@ -139,14 +139,24 @@ Foam::flowModels::fieldFlow::fieldFlow
 
 void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
 {
+    const List<vector>& x = chains.positions();
+    nOutside_ = 0;
+    if (x.empty())
+    {
+        // No interpolation to set up (cellPoint interpolates U to the
+        // points): a scene without chains pays nothing
+        hostCell_.clear();
+        beadVelocity_.clear();
+        velocityStart_.clear();
+        return;
+    }
+
     const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
 
     autoPtr<interpolation<vector>> interpolator
     (
         interpolation<vector>::New(interpolationScheme_, U)
     );
-
-    const List<vector>& x = chains.positions();
 
     if (hostCell_.size() != x.size())
     {
@@ -155,7 +165,6 @@ void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
     }
     beadVelocity_.setSize(x.size());
 
-    nOutside_ = 0;
     forAll(x, i)
     {
         const point p = periodic_.wrap(x[i]);
