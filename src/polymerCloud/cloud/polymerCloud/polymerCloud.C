@@ -339,6 +339,45 @@ void Foam::polymerCloud::wrapChains()
 }
 
 
+void Foam::polymerCloud::recordUnconstrained()
+{
+    if (!flow_->twoWay())
+    {
+        return;
+    }
+
+    const List<vector>& v = chains_.velocities();
+    velocityChange_.resize(v.size());
+    forAll(v, i)
+    {
+        velocityChange_[i] = v[i] - velocitiesOld_[i];
+    }
+    positionsStar_ = chains_.positions();
+}
+
+
+void Foam::polymerCloud::recordVelocityChange()
+{
+    if (!flow_->twoWay())
+    {
+        return;
+    }
+
+    // The friction over the step is zeta (u dt - (x - x^n)) on the path
+    // the bead took: the constraint's displacement adds -zeta (x-dagger -
+    // x*) to that of the unconstrained update
+    const List<vector>& x = chains_.positions();
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const scalar gamma = 1/chains_.type(c).inertialTime();
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        {
+            velocityChange_[i] -= gamma*(x[i] - positionsStar_[i]);
+        }
+    }
+}
+
+
 void Foam::polymerCloud::subStepChain
 (
     const label chaini,
@@ -352,15 +391,22 @@ void Foam::polymerCloud::subStepChain
     SubList<vector> x(chains_.positions(), n, first);
     SubList<vector> v(chains_.velocities(), n, first);
     SubList<vector> subStepStart(positionsOld_, n, first);
+    SubList<vector> change
+    (
+        velocityChange_, flow_->twoWay() ? n : 0, first
+    );
     const List<vector> xStart(SubList<vector>(positionsOld_, n, first));
     const List<vector> vStart(SubList<vector>(velocitiesOld_, n, first));
 
     constraint_->countSubStepped();
 
+    const scalar gamma = 1/chains_.type(chaini).inertialTime();
+
     for (label nSub = 2; nSub <= constraint_->maxSubSteps(); nSub *= 2)
     {
         x = xStart;
         v = vStart;
+        change = Zero;
 
         bool converged = true;
         for (label s = 0; s < nSub && converged; ++s)
@@ -368,6 +414,7 @@ void Foam::polymerCloud::subStepChain
             // The fluid velocity stays that at x^n; each sub-step has its
             // own noise, keyed by (nSub, s)
             subStepStart = x;
+            const List<vector> vSubStart(v);
             integration_->integrateChain
             (
                 chains_,
@@ -378,10 +425,19 @@ void Foam::polymerCloud::subStepChain
                 seed_,
                 nSub + s
             );
+            const List<vector> xSubStar(x);
+            const List<vector> vSubStar(v);
             converged = constraint_->correctChain
             (
                 chains_, chaini, positionsOld_, deltaT/nSub, runTime.value()
             );
+
+            // The friction and noise part, as recordVelocityChange
+            forAll(change, k)
+            {
+                change[k] +=
+                    vSubStar[k] - vSubStart[k] - gamma*(x[k] - xSubStar[k]);
+            }
         }
 
         if (converged)
@@ -481,6 +537,7 @@ Foam::polymerCloud::polymerCloud
     chains_(types_),
     positionsOld_(),
     velocitiesOld_(),
+    velocityChange_(),
     failedChains_(),
     force_(),
     drift_(),
@@ -657,9 +714,12 @@ void Foam::polymerCloud::evolve()
         );
     }
 
+    recordUnconstrained();
+
     // 2. Rod lengths and rod velocities; failed chains are sub-stepped
     failedChains_.clear();
     constraint_->correct(chains_, positionsOld_, deltaT, time, failedChains_);
+    recordVelocityChange();
     for (const label c : failedChains_)
     {
         subStepChain(c, deltaT);
@@ -679,7 +739,7 @@ void Foam::polymerCloud::evolve()
         flow_->depositMomentum
         (
             chains_,
-            velocitiesOld_,
+            velocityChange_,
             forces_.empty() ? UList<vector>() : UList<vector>(force_),
             deltaT
         );
@@ -726,10 +786,22 @@ void Foam::polymerCloud::predictCoupling()
         runTime.timeIndex(),
         seed_
     );
+    recordUnconstrained();
+
+    // The rod tensions' displacement, for the momentum they pass on; the
+    // step proper counts the solves and sub-steps the failures
+    DynamicList<label> failed;
+    constraint_->correct
+    (
+        chains_, positionsOld_, deltaT, runTime.value(), failed
+    );
+    constraint_->resetCounters();
+    recordVelocityChange();
+
     flow_->depositMomentum
     (
         chains_,
-        velocitiesOld_,
+        velocityChange_,
         forces_.empty() ? UList<vector>() : UList<vector>(force_),
         deltaT
     );

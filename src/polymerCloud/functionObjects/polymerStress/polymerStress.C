@@ -222,9 +222,7 @@ void Foam::cloudFunctions::polymerStress::postConstrain(const scalar deltaT)
     for (label c = 0; c < chains.nChains(); ++c)
     {
         const chainType& type = chains.type(c);
-        const scalar gamma = type.friction()/type.beadMass();
-        const scalar forcePerShift =
-            type.friction()/(deltaT + std::expm1(-gamma*deltaT)/gamma);
+        const scalar forcePerShift = type.forcePerDisplacement(deltaT);
 
         const vector centre = chains.centreOfMass(c);
 

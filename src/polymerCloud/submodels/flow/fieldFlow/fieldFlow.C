@@ -58,7 +58,7 @@ Foam::flowModels::fieldFlow::fieldFlow
       ? checkedInput::positiveScalar(coeffDict_, "rho", "<solvent density>")
       : 1
     ),
-    semiImplicit_(coeffDict_.getOrDefault<bool>("semiImplicit", true)),
+    semiImplicit_(coeffDict_.getOrDefault<bool>("semiImplicit", false)),
     predictorCorrector_
     (
         coeffDict_.getOrDefault<bool>("predictorCorrector", false)
@@ -201,7 +201,7 @@ void Foam::flowModels::fieldFlow::storePredictor()
 void Foam::flowModels::fieldFlow::depositMomentum
 (
     const polymerChains& chains,
-    const UList<vector>& velocitiesOld,
+    const UList<vector>& velocityChange,
     const UList<vector>& force,
     const scalar deltaT
 )
@@ -214,7 +214,7 @@ void Foam::flowModels::fieldFlow::depositMomentum
         return;
     }
 
-    const List<vector>& vStar = chains.velocities();
+    const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
 
     for (label c = 0; c < chains.nChains(); ++c)
     {
@@ -233,15 +233,17 @@ void Foam::flowModels::fieldFlow::depositMomentum
 
             // What the solvent received: minus the beads' momentum change
             // less what external forces gave them
-            vector transfer = -m*(vStar[i] - velocitiesOld[i]);
+            vector transfer = -m*velocityChange[i];
             if (force.size())
             {
                 transfer += force[i]*deltaT;
             }
 
-            // The implicit part's explicit counterpart, at the bead's U
-            momentumTransfer_[celli] +=
-                (transfer + coeff*beadVelocity_[i])/rho_;
+            // The implicit part's explicit counterpart: the cell's U now,
+            // so that in a steady flow the two cancel (at the bead's
+            // interpolated U they would leave a spurious force wherever
+            // it differs from the cell's, as next to walls)
+            momentumTransfer_[celli] += (transfer + coeff*U[celli])/rho_;
             momentumCoeff_[celli] += coeff/rho_;
         }
     }
