@@ -23,7 +23,8 @@ Foam::polymerChains::polymerChains(const PtrList<chainType>& types)
     velocities_(),
     chainStart_(1, Zero),
     chainTypeIndex_(),
-    globalChainId_()
+    globalChainId_(),
+    layoutVersion_(0)
 {}
 
 
@@ -37,6 +38,7 @@ void Foam::polymerChains::append
     const UList<vector>& velocities
 )
 {
+    ++layoutVersion_;
     if
     (
         positions.size() != types_[typeIndex].nBeads()
@@ -77,6 +79,7 @@ Foam::label Foam::polymerChains::chainOf(const label beadi) const
 
 void Foam::polymerChains::remove(const labelUList& chainIndices)
 {
+    ++layoutVersion_;
     boolList removed(nChains(), false);
     for (const label c : chainIndices)
     {
@@ -116,6 +119,7 @@ void Foam::polymerChains::remove(const labelUList& chainIndices)
 
 void Foam::polymerChains::clear()
 {
+    ++layoutVersion_;
     positions_.clear();
     velocities_.clear();
     chainStart_.resize(1);

@@ -141,11 +141,10 @@ void Foam::polymerCloud::initialise()
         initialisationModel::New(subModels, mesh_)
     );
 
-    // One owner per chain: the master creates them all
-    if (Pstream::master())
-    {
-        initialisation->create(chains_, seed_);
-    }
+    // Every processor creates the same chains (the initialisations draw
+    // counter-based noise and test beads against the whole mesh); each
+    // keeps those it owns once their velocities are set
+    initialisation->create(chains_, seed_);
 
     checkRods(properties_.dictionary::name()/"subModels"/"initialisation");
     if (flow_->solvesFlow() || wall_->active())
@@ -325,7 +324,7 @@ void Foam::polymerCloud::wrapChains()
     for (label c = 0; c < chains_.nChains(); ++c)
     {
         const label first = chains_.start(c);
-        const vector shift = periodic_.shift(x[first + chains_.size(c)/2]);
+        const vector shift = periodic_.shift(x[referenceBead(c)]);
         if (shift == vector::zero)
         {
             continue;
@@ -557,6 +556,7 @@ Foam::polymerCloud::polymerCloud
     totalCollisions_(),
     totalWall_(),
     periodicCrossings_(0),
+    migrations_(0),
     evolveSeconds_(0),
     beadSteps_(0),
     maxBeadsOutside_(0),
@@ -604,27 +604,24 @@ Foam::polymerCloud::polymerCloud
             << exit(FatalIOError);
     }
 
-    if (Pstream::parRun() && flow_->solvesFlow())
-    {
-        FatalIOErrorInFunction(subModels)
-            << "flow " << flow_->type() << " in " << subModels.name()
-            << " runs serially in this version: beads on other processors"
-            << " would not see their fluid velocity" << nl
-            << "    expected: a serial run, or flow none or prescribed"
-            << exit(FatalIOError);
-    }
+    checkParallelSupport(subModels);
 
-    const bool restart = savedCloudExists();
+    // Every processor of a parallel run restarts, or none does
+    const bool restart = returnReduce(savedCloudExists(), orOp<bool>());
 
     if (restart)
     {
         Info<< name() << ": reading the chains saved in "
             << mesh_.time().timeName()/cloud::prefix/name() << endl;
-        readChains();
+        if (savedCloudExists())
+        {
+            readChains();
+        }
     }
     else
     {
         initialise();
+        keepOwnChains();
         Info<< name() << ": created "
             << returnReduce(chains_.nChains(), sumOp<label>())
             << " chains with the "
@@ -755,6 +752,7 @@ void Foam::polymerCloud::evolve()
     totalWall_.add(wall_->count());
     wall_->resetCounters();
     wrapChains();
+    distributeChains();
 
     evolveSeconds_ += timer.cpuTimeIncrement();
     beadSteps_ += chains_.nBeads();
@@ -865,6 +863,9 @@ void Foam::polymerCloud::writeSummary(Ostream& os) const
 void Foam::polymerCloud::writeReport(Ostream& os) const
 {
     const scalar seconds = returnReduce(evolveSeconds_, maxOp<scalar>());
+    const constraintCounters constraints = totalCounters_.reduced();
+    const collisionCounters collisions = totalCollisions_.reduced();
+    const wallCounters walls = totalWall_.reduced();
     const scalar beadSteps = returnReduce(beadSteps_, sumOp<scalar>());
 
     os  << name() << ": " << beadSteps << " bead-steps in " << seconds
@@ -874,25 +875,27 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         os  << ", " << beadSteps/seconds << " bead-steps/s";
     }
     os  << nl
-        << "    constraint solves " << totalCounters_.solves
+        << "    constraint solves " << constraints.solves
         << ", iterations per solve "
-        << scalar(totalCounters_.iterations)/max(totalCounters_.solves, 1)
-        << " (max " << totalCounters_.maxIterations << ")"
-        << ", failures " << totalCounters_.failures
-        << ", chains sub-stepped " << totalCounters_.subStepped << nl
-        << "    rod-rod collisions " << totalCollisions_.events
-        << " (max per step " << totalCollisions_.maxEventsPerStep
-        << "), event-loop stalls " << totalCollisions_.stalls
-        << ", crossing-time solves " << totalCollisions_.pairChecks
-        << ", audited crossings " << totalCollisions_.auditCrossings << nl
-        << "    bead-wall rebounds " << totalWall_.rebounds
-        << ", chains that left the domain " << totalWall_.escapedChains
-        << " (" << totalWall_.escapedBeads << " beads)"
-        << ", beads stuck " << totalWall_.stuck
-        << ", chain steps rejected " << totalWall_.rejectedSteps << nl
+        << scalar(constraints.iterations)/max(constraints.solves, 1)
+        << " (max " << constraints.maxIterations << ")"
+        << ", failures " << constraints.failures
+        << ", chains sub-stepped " << constraints.subStepped << nl
+        << "    rod-rod collisions " << collisions.events
+        << " (max per step " << collisions.maxEventsPerStep
+        << "), event-loop stalls " << collisions.stalls
+        << ", crossing-time solves " << collisions.pairChecks
+        << ", audited crossings " << collisions.auditCrossings << nl
+        << "    bead-wall rebounds " << walls.rebounds
+        << ", chains that left the domain " << walls.escapedChains
+        << " (" << walls.escapedBeads << " beads)"
+        << ", beads stuck " << walls.stuck
+        << ", chain steps rejected " << walls.rejectedSteps << nl
         << "    chains injected " << returnReduce(nInjected_, sumOp<label>())
         << ", chains carried across cyclic patches "
-        << returnReduce(periodicCrossings_, sumOp<label>()) << nl
+        << returnReduce(periodicCrossings_, sumOp<label>())
+        << ", chains moved between processors "
+        << returnReduce(migrations_, sumOp<label>()) << nl
         << "    beads " << nParcels() << ", outside the mesh "
         << nBeadsOutside() << " (checked every step: at most "
         << returnReduce(maxBeadsOutside_, maxOp<label>()) << " in a step, "

@@ -150,8 +150,16 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
     reduce(dofKT, sumOp<scalar>());
     reduce(rodError, maxOp<scalar>());
 
-    const polymerCloud::constraintCounters& interval =
-        cloud_.intervalCounters();
+    const polymerCloud::constraintCounters interval =
+        cloud_.intervalCounters().reduced();
+    const polymerCloud::constraintCounters total =
+        cloud_.totalCounters().reduced();
+    const polymerCloud::collisionCounters intervalCollisions =
+        cloud_.intervalCollisions().reduced();
+    const polymerCloud::collisionCounters totalCollisions =
+        cloud_.totalCollisions().reduced();
+    const polymerCloud::wallCounters totalWall =
+        cloud_.totalWall().reduced();
     const label nOutside = cloud_.nBeadsOutside();
     const label nRodsOutside = returnReduce(rodsOutside(), sumOp<label>());
 
@@ -167,11 +175,11 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
             << rodError << ' '
             << scalar(interval.iterations)/max(interval.solves, 1) << ' '
             << interval.maxIterations << ' '
-            << cloud_.totalCounters().failures << ' '
-            << cloud_.totalCounters().subStepped << ' '
-            << cloud_.intervalCollisions().events << ' '
-            << cloud_.totalCollisions().stalls << ' '
-            << cloud_.totalWall().escapedChains << ' '
+            << total.failures << ' '
+            << total.subStepped << ' '
+            << intervalCollisions.events << ' '
+            << totalCollisions.stalls << ' '
+            << totalWall.escapedChains << ' '
             << nOutside << ' '
             << nRodsOutside << endl;
     }

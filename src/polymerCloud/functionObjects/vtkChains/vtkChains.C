@@ -34,11 +34,10 @@ namespace cloudFunctions
 
 void Foam::cloudFunctions::vtkChains::writeLines
 (
-    vtk::formatter& format
+    vtk::formatter& format,
+    const polymerChains& chains
 ) const
 {
-    const polymerChains& chains = cloud_.chains();
-
     // A ring repeats its first bead to close the line
     labelList connectivity(chains.nBeads() + chains.nChains());
     labelList offsets(chains.nChains());
@@ -75,9 +74,12 @@ void Foam::cloudFunctions::vtkChains::writeLines
 }
 
 
-void Foam::cloudFunctions::vtkChains::writeFile(const fileName& file) const
+void Foam::cloudFunctions::vtkChains::writeFile
+(
+    const fileName& file,
+    const polymerChains& chains
+) const
 {
-    const polymerChains& chains = cloud_.chains();
     const Time& runTime = cloud_.mesh().time();
     const label nBeads = chains.nBeads();
 
@@ -105,7 +107,7 @@ void Foam::cloudFunctions::vtkChains::writeFile(const fileName& file) const
     format().endDataArray();
     format().endTag(vtk::fileTag::POINTS);
 
-    writeLines(format());
+    writeLines(format(), chains);
 
     labelList chainId(nBeads);
     labelList bead(nBeads);
@@ -170,7 +172,8 @@ Foam::cloudFunctions::vtkChains::vtkChains
 
 void Foam::cloudFunctions::vtkChains::write()
 {
-    // The master owns every chain (see polymerCloud)
+    // Every processor's chains, written by the master
+    const polymerChains chains(cloud_.gatherChains());
     if (!Pstream::master())
     {
         return;
@@ -186,7 +189,7 @@ void Foam::cloudFunctions::vtkChains::write()
         dir/cloud_.name() + "_" + Foam::name(runTime.timeIndex()) + ".vtp"
     );
 
-    writeFile(file);
+    writeFile(file, chains);
 
     const fileName seriesName(vtk::seriesWriter::base(file));
     if (series_.empty())

@@ -12,6 +12,7 @@ License
 
 #include "periodicImages.H"
 #include "cyclicPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
 #include "SubField.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -24,41 +25,88 @@ namespace Foam
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::periodicImages::patchFaces
+(
+    const label patchi,
+    vectorField& areas,
+    pointField& centres
+) const
+{
+    // A cyclic patch's own faces, and in a decomposed mesh those of the
+    // processorCyclic patches made from it
+    const polyBoundaryMesh& patches = mesh().boundaryMesh();
+    labelList ids(processorCyclicPolyPatch::patchIDs
+    (
+        patches[patchi].name(),
+        patches
+    ));
+    ids.append(patchi);
+
+    DynamicList<vector> a;
+    DynamicList<point> c;
+    for (const label id : ids)
+    {
+        a.append(vectorField(patches[id].faceAreas()));
+        c.append(pointField(patches[id].faceCentres()));
+    }
+    areas.transfer(a);
+    centres.transfer(c);
+}
+
+
+Foam::point Foam::periodicImages::centroid
+(
+    const vectorField& areas,
+    const pointField& centres
+) const
+{
+    return gSum(mag(areas)*centres)/max(gSum(mag(areas)), VSMALL);
+}
+
+
 void Foam::periodicImages::addPatch(const label patchi)
 {
     const cyclicPolyPatch& patch =
         refCast<const cyclicPolyPatch>(mesh().boundaryMesh()[patchi]);
-    const cyclicPolyPatch& neighbour = patch.neighbPatch();
 
-    const vectorField areas(patch.faceAreas());
-    const vectorField centres(patch.faceCentres());
-    const vectorField neighbourCentres(neighbour.faceCentres());
+    vectorField areas, neighbourAreas;
+    pointField centres, neighbourCentres;
+    patchFaces(patchi, areas, centres);
+    patchFaces(patch.neighbPatchID(), neighbourAreas, neighbourCentres);
 
-    // Sums over the faces of every processor: a patch may be empty here
-    const label nFaces = returnReduce(patch.size(), sumOp<label>());
-    if (nFaces == 0)
+    if (returnReduce(areas.size(), sumOp<label>()) == 0)
     {
         return;
     }
 
+    // The patches' planes, over the faces of every processor: the
+    // translation maps the patch's centroid to its neighbour's
     const vector areaSum = gSum(areas);
     const vector normal = areaSum/max(mag(areaSum), VSMALL);
-    const point centre = gSum(mag(areas)*centres)/gSum(mag(areas));
-    const vector translation = gSum(neighbourCentres - centres)/nFaces;
+    const point centre = centroid(areas, centres);
+    const vector translation =
+        centroid(neighbourAreas, neighbourCentres) - centre;
 
-    // Planar and translational: every face parallel to the plane and on
-    // it, every face pair matched by the one translation
+    // Planar and translational: every face of both patches parallel to
+    // the plane, and on its own patch's plane
     const scalar span = max(mag(translation), SMALL);
+    const point neighbourCentre = centre + translation;
     scalar worst = 0;
-    forAll(patch, facei)
+    forAll(areas, facei)
     {
         const vector n = areas[facei]/mag(areas[facei]);
-        const vector mismatch =
-            neighbourCentres[facei] - centres[facei] - translation;
-
         worst = max(worst, 1 - (n & normal));
         worst = max(worst, mag((centres[facei] - centre) & normal)/span);
-        worst = max(worst, mag(mismatch)/span);
+    }
+    forAll(neighbourAreas, facei)
+    {
+        const vector n = neighbourAreas[facei]/mag(neighbourAreas[facei]);
+        worst = max(worst, 1 + (n & normal));
+        worst = max
+        (
+            worst,
+            mag((neighbourCentres[facei] - neighbourCentre) & normal)/span
+        );
     }
     reduce(worst, maxOp<scalar>());
 

@@ -83,6 +83,7 @@ Foam::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     ),
     audit_(coeffDict_.getOrDefault<bool>("audit", false)),
     cellSize_(1),
+    rodsLayout_(-1),
     imageShift_(),
     imageCode_(),
     wall_(nullptr)
@@ -552,9 +553,10 @@ void Foam::collisionModels::elasticRods::correct
     List<vector>& x = chains.positions();
     List<vector>& vDagger = chains.velocities();
 
-    if (rods_.empty() || beadRods_.size() != nBeads)
+    if (rodsLayout_ != chains.layoutVersion() || beadRods_.size() != nBeads)
     {
         buildRods(chains);
+        rodsLayout_ = chains.layoutVersion();
     }
 
     // Straight paths over the step (paper eq. 1), in step time [0, dt]

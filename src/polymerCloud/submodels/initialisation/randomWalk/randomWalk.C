@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "randomWalk.H"
+#include "periodicImages.H"
 #include "chainNoise.H"
 #include "checkedInput.H"
 #include "mathematicalConstants.H"
@@ -40,7 +41,11 @@ Foam::initialisationModels::randomWalk::randomWalk
     box_(coeffDict_.get<point>("min"), coeffDict_.get<point>("max")),
     insideMesh_
     (
-        coeffDict_.getOrDefault<bool>("insideMesh", mesh.nCells() > 1)
+        coeffDict_.getOrDefault<bool>
+        (
+            "insideMesh",
+            returnReduce(mesh.nCells(), sumOp<label>()) > 1
+        )
     )
 {
     if (!box_.valid())
@@ -101,14 +106,20 @@ bool Foam::initialisationModels::randomWalk::inside
     const List<point>& x
 )
 {
-    for (const point& p : x)
+    // Each bead in some processor's mesh (every processor draws the same
+    // chains and takes part), at its image inside the cyclic patches
+    const periodicImages& periodic = periodicImages::New(mesh);
+    boolList found(x.size());
+    forAll(x, i)
     {
-        if (mesh.findCell(p) < 0)
-        {
-            return false;
-        }
+        found[i] = (mesh.findCell(periodic.wrap(x[i])) >= 0);
     }
-    return true;
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(found, orEqOp<bool>());
+        Pstream::listCombineScatter(found);
+    }
+    return found.found(false) == false;
 }
 
 

@@ -1,0 +1,293 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+Description
+    The polymerCloud's parallel work: chains owned whole by the processor
+    holding their reference (middle) bead, moved between processors as
+    they go, and gathered for output.
+
+\*---------------------------------------------------------------------------*/
+
+#include "polymerCloud.H"
+#include "PstreamBuffers.H"
+#include "pointField.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Write chains of a polymerChains to a stream: count, then per chain its
+// type, global id, positions and velocities
+void sendChains
+(
+    Foam::Ostream& os,
+    const Foam::polymerChains& chains,
+    const Foam::labelUList& chainIndices
+)
+{
+    using namespace Foam;
+
+    os  << chainIndices.size();
+    for (const label c : chainIndices)
+    {
+        const label n = chains.size(c);
+        const label first = chains.start(c);
+        os  << chains.typeIndex(c) << chains.globalId(c)
+            << SubList<vector>(chains.positions(), n, first)
+            << SubList<vector>(chains.velocities(), n, first);
+    }
+}
+
+
+// Read chains written by sendChains and append them
+void receiveChains(Foam::Istream& is, Foam::polymerChains& chains)
+{
+    using namespace Foam;
+
+    label nChains;
+    is  >> nChains;
+    for (label k = 0; k < nChains; ++k)
+    {
+        label typeIndex, globalId;
+        List<vector> positions, velocities;
+        is  >> typeIndex >> globalId >> positions >> velocities;
+        chains.append(typeIndex, globalId, positions, velocities);
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::polymerCloud::checkParallelSupport(const dictionary& subModels)
+const
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    // A chain's beads may lie in other processors' meshes: models that
+    // look the beads up in the mesh would miss them there
+    word unsupported;
+    if (flow_->solvesFlow())
+    {
+        unsupported = "flow " + flow_->type();
+    }
+    else if (wall_->active())
+    {
+        unsupported = "wall " + wall_->type();
+    }
+    for (const forceModel& model : forces_)
+    {
+        if (model.usesMesh())
+        {
+            unsupported = "forces (" + model.type() + ")";
+        }
+    }
+
+    if (!unsupported.empty())
+    {
+        FatalIOErrorInFunction(subModels)
+            << unsupported << " in " << subModels.name() << " runs serially"
+            << " in this version: a chain's beads in other processors'"
+            << " meshes would not find their cells" << nl
+            << "    expected: a serial run, or in parallel flow none or"
+            << " prescribed, wall none and forces without the mesh"
+            << exit(FatalIOError);
+    }
+
+    if (collision_->type() != "none")
+    {
+        WarningInFunction
+            << "collision " << collision_->type() << " in parallel: the"
+            << " rods of one chain meet each other, but chains owned by"
+            << " different processors do not collide (no ghost rods yet)"
+            << endl;
+    }
+}
+
+
+void Foam::polymerCloud::distributeChains()
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    const List<vector>& x = chains_.positions();
+    const label myProc = Pstream::myProcNo();
+    const label nProcs = Pstream::nProcs();
+
+    // Chains whose reference bead this processor's mesh does not hold
+    DynamicList<label> leaving;
+    List<pointField> points(nProcs);
+    {
+        DynamicList<point> leavingPoints;
+        for (label c = 0; c < chains_.nChains(); ++c)
+        {
+            const point p = periodic_.wrap(x[referenceBead(c)]);
+            if (mesh_.findCell(p) < 0)
+            {
+                leaving.append(c);
+                leavingPoints.append(p);
+            }
+        }
+        points[myProc] = leavingPoints;
+    }
+
+    // Every processor learns every leaving point and claims those its mesh
+    // holds; the lowest claiming processor takes the chain, and a chain no
+    // processor holds (outside the mesh) stays where it is
+    Pstream::gatherList(points);
+    Pstream::scatterList(points);
+
+    labelList offset(nProcs + 1, Zero);
+    forAll(points, proci)
+    {
+        offset[proci + 1] = offset[proci] + points[proci].size();
+    }
+    if (offset[nProcs] == 0)
+    {
+        return;
+    }
+
+    labelList owner(offset[nProcs], labelMax);
+    forAll(points, proci)
+    {
+        forAll(points[proci], k)
+        {
+            if (mesh_.findCell(points[proci][k]) >= 0)
+            {
+                owner[offset[proci] + k] = myProc;
+            }
+        }
+    }
+    Pstream::listCombineGather(owner, minEqOp<label>());
+    Pstream::listCombineScatter(owner);
+
+    // Send each leaving chain to its new owner
+    List<DynamicList<label>> toProc(nProcs);
+    DynamicList<label> sent;
+    forAll(leaving, k)
+    {
+        const label proci = owner[offset[myProc] + k];
+        if (proci != labelMax && proci != myProc)
+        {
+            toProc[proci].append(leaving[k]);
+            sent.append(leaving[k]);
+        }
+    }
+
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(toProc, proci)
+    {
+        if (toProc[proci].size())
+        {
+            UOPstream os(proci, buffers);
+            sendChains(os, chains_, toProc[proci]);
+        }
+    }
+    labelList recvSizes;
+    buffers.finishedSends(recvSizes);
+
+    chains_.remove(sent);
+    migrations_ += sent.size();
+
+    forAll(recvSizes, proci)
+    {
+        if (recvSizes[proci])
+        {
+            UIPstream is(proci, buffers);
+            receiveChains(is, chains_);
+        }
+    }
+}
+
+
+void Foam::polymerCloud::keepOwnChains()
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    const List<vector>& x = chains_.positions();
+    labelList owner(chains_.nChains(), labelMax);
+    forAll(owner, c)
+    {
+        if (mesh_.findCell(periodic_.wrap(x[referenceBead(c)])) >= 0)
+        {
+            owner[c] = Pstream::myProcNo();
+        }
+    }
+    Pstream::listCombineGather(owner, minEqOp<label>());
+    Pstream::listCombineScatter(owner);
+
+    DynamicList<label> others;
+    forAll(owner, c)
+    {
+        const label proci =
+            (owner[c] == labelMax) ? Pstream::masterNo() : owner[c];
+        if (proci != Pstream::myProcNo())
+        {
+            others.append(c);
+        }
+    }
+    chains_.remove(others);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::polymerChains Foam::polymerCloud::gatherChains() const
+{
+    polymerChains all(types_);
+
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    if (!Pstream::master())
+    {
+        UOPstream os(Pstream::masterNo(), buffers);
+        sendChains(os, chains_, identity(chains_.nChains()));
+    }
+    labelList recvSizes;
+    buffers.finishedSends(recvSizes);
+
+    if (Pstream::master())
+    {
+        for (label c = 0; c < chains_.nChains(); ++c)
+        {
+            const label n = chains_.size(c);
+            const label first = chains_.start(c);
+            all.append
+            (
+                chains_.typeIndex(c),
+                chains_.globalId(c),
+                SubList<vector>(chains_.positions(), n, first),
+                SubList<vector>(chains_.velocities(), n, first)
+            );
+        }
+        forAll(recvSizes, proci)
+        {
+            if (recvSizes[proci])
+            {
+                UIPstream is(proci, buffers);
+                receiveChains(is, all);
+            }
+        }
+    }
+
+    return all;
+}
+
+
+// ************************************************************************* //
