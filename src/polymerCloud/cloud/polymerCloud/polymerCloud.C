@@ -217,23 +217,56 @@ void Foam::polymerCloud::checkRods(const fileName& origin) const
 
 void Foam::polymerCloud::checkInsideMesh(const fileName& origin) const
 {
+    // Beads this processor's mesh does not hold, checked against every
+    // processor's (collective)
     const List<vector>& x = chains_.positions();
-    for (label c = 0; c < chains_.nChains(); ++c)
+    DynamicList<label> unheld;
+    List<pointField> points(Pstream::nProcs());
     {
-        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        DynamicList<point> unheldPoints;
+        forAll(x, i)
         {
-            if (mesh_.findCell(periodic_.wrap(x[i])) < 0)
+            const point p = periodic_.wrap(x[i]);
+            if (mesh_.findCell(p) < 0)
             {
-                FatalIOErrorInFunction(properties_)
-                    << "Chain " << chains_.globalId(c) << " ("
-                    << chains_.type(c).name() << ") from " << origin.c_str()
-                    << "/initialisation has bead " << i - chains_.start(c)
-                    << " at " << x[i] << ", outside the mesh" << nl
-                    << "    expected: every bead in the mesh when the flow is"
-                    << " solved or walls are modelled"
-                    << exit(FatalIOError);
+                unheld.append(i);
+                unheldPoints.append(p);
             }
         }
+        points[Pstream::myProcNo()] = unheldPoints;
+    }
+    Pstream::gatherList(points);
+    Pstream::scatterList(points);
+
+    List<boolList> found(points.size());
+    forAll(points, proci)
+    {
+        found[proci].setSize(points[proci].size());
+        forAll(points[proci], k)
+        {
+            found[proci][k] = (mesh_.findCell(points[proci][k]) >= 0);
+        }
+        Pstream::listCombineGather(found[proci], orEqOp<bool>());
+        Pstream::listCombineScatter(found[proci]);
+    }
+
+    const boolList& mine = found[Pstream::myProcNo()];
+    forAll(unheld, k)
+    {
+        if (mine[k])
+        {
+            continue;
+        }
+        const label i = unheld[k];
+        const label c = chains_.chainOf(i);
+        FatalIOErrorInFunction(properties_)
+            << "Chain " << chains_.globalId(c) << " ("
+            << chains_.type(c).name() << ") from " << origin.c_str()
+            << "/initialisation has bead " << i - chains_.start(c)
+            << " at " << x[i] << ", outside the mesh" << nl
+            << "    expected: every bead in the mesh when the flow is"
+            << " solved or walls are modelled"
+            << exit(FatalIOError);
     }
 }
 
@@ -557,6 +590,7 @@ Foam::polymerCloud::polymerCloud
     totalWall_(),
     periodicCrossings_(0),
     migrations_(0),
+    migrationSeconds_(0),
     evolveSeconds_(0),
     beadSteps_(0),
     maxBeadsOutside_(0),
@@ -895,7 +929,17 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         << ", chains carried across cyclic patches "
         << returnReduce(periodicCrossings_, sumOp<label>())
         << ", chains moved between processors "
-        << returnReduce(migrations_, sumOp<label>()) << nl
+        << returnReduce(migrations_, sumOp<label>()) << nl;
+    if (Pstream::parRun())
+    {
+        os  << "    parallel exchanges (wall clock, slowest processor):"
+            << " moving chains "
+            << returnReduce(migrationSeconds_, maxOp<scalar>())
+            << " s, beads' flow and momentum "
+            << returnReduce(flow_->exchangeSeconds(), maxOp<scalar>())
+            << " s" << nl;
+    }
+    os
         << "    beads " << nParcels() << ", outside the mesh "
         << nBeadsOutside() << " (checked every step: at most "
         << returnReduce(maxBeadsOutside_, maxOp<label>()) << " in a step, "

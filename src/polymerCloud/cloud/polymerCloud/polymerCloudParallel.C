@@ -18,6 +18,7 @@ Description
 #include "polymerCloud.H"
 #include "PstreamBuffers.H"
 #include "pointField.H"
+#include "clockTime.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -79,11 +80,7 @@ const
     // A chain's beads may lie in other processors' meshes: models that
     // look the beads up in the mesh would miss them there
     word unsupported;
-    if (flow_->solvesFlow())
-    {
-        unsupported = "flow " + flow_->type();
-    }
-    else if (wall_->active())
+    if (wall_->active())
     {
         unsupported = "wall " + wall_->type();
     }
@@ -101,8 +98,8 @@ const
             << unsupported << " in " << subModels.name() << " runs serially"
             << " in this version: a chain's beads in other processors'"
             << " meshes would not find their cells" << nl
-            << "    expected: a serial run, or in parallel flow none or"
-            << " prescribed, wall none and forces without the mesh"
+            << "    expected: a serial run, or in parallel wall none and"
+            << " forces without the mesh"
             << exit(FatalIOError);
     }
 
@@ -124,11 +121,14 @@ void Foam::polymerCloud::distributeChains()
         return;
     }
 
+    clockTime clock;
     const List<vector>& x = chains_.positions();
     const label myProc = Pstream::myProcNo();
     const label nProcs = Pstream::nProcs();
 
-    // Chains whose reference bead this processor's mesh does not hold
+    // Chains whose reference bead this processor's mesh does not hold (a
+    // point outside its bounding box needs no search)
+    const boundBox& bounds = mesh_.bounds();
     DynamicList<label> leaving;
     List<pointField> points(nProcs);
     {
@@ -136,7 +136,7 @@ void Foam::polymerCloud::distributeChains()
         for (label c = 0; c < chains_.nChains(); ++c)
         {
             const point p = periodic_.wrap(x[referenceBead(c)]);
-            if (mesh_.findCell(p) < 0)
+            if (!bounds.contains(p) || mesh_.findCell(p) < 0)
             {
                 leaving.append(c);
                 leavingPoints.append(p);
@@ -158,6 +158,7 @@ void Foam::polymerCloud::distributeChains()
     }
     if (offset[nProcs] == 0)
     {
+        migrationSeconds_ += clock.elapsedTime();
         return;
     }
 
@@ -166,7 +167,8 @@ void Foam::polymerCloud::distributeChains()
     {
         forAll(points[proci], k)
         {
-            if (mesh_.findCell(points[proci][k]) >= 0)
+            const point& p = points[proci][k];
+            if (bounds.contains(p) && mesh_.findCell(p) >= 0)
             {
                 owner[offset[proci] + k] = myProc;
             }
@@ -211,6 +213,7 @@ void Foam::polymerCloud::distributeChains()
             receiveChains(is, chains_);
         }
     }
+    migrationSeconds_ += clock.elapsedTime();
 }
 
 

@@ -79,14 +79,10 @@ void Foam::cloudFunctions::polymerStress::locateBeads()
     const List<vector>& x = cloud_.chains().positions();
     const periodicImages& periodic = periodicImages::New(cloud_.mesh());
 
-    if (beadCell_.size() != x.size())
-    {
-        beadCell_.setSize(x.size());
-        beadCell_ = -1;
-    }
+    labelList& cell = beadCells_.update(cloud_.chains());
     forAll(x, i)
     {
-        beadCell_[i] = locateBead(search_(), periodic.wrap(x[i]), beadCell_[i]);
+        cell[i] = locateBead(search_(), periodic.wrap(x[i]), cell[i]);
     }
 }
 
@@ -103,7 +99,7 @@ void Foam::cloudFunctions::polymerStress::addToFields
     step = Zero;
     forAll(beadTerm, i)
     {
-        const label celli = beadCell_[i];
+        const label celli = beadCells_.cells()[i];
         if (celli >= 0)
         {
             step[celli] += beadTerm[i]/V[celli];
@@ -153,7 +149,7 @@ Foam::cloudFunctions::polymerStress::polymerStress
     fieldMean_(),
     fieldSum_(),
     search_(),
-    beadCell_()
+    beadCells_()
 {
     if (dict.getOrDefault<bool>("writeFields", true))
     {

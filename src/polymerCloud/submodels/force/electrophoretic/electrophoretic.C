@@ -66,7 +66,7 @@ Foam::forceModels::electrophoretic::electrophoretic
     interpolateField_(),
     search_(mesh),
     periodic_(periodicImages::New(mesh)),
-    hostCell_()
+    hostCells_()
 {
     Info<< "electrophoretic: solving laplacian(" << potential_.name()
         << ") = 0 for the electric field" << endl;
@@ -93,20 +93,16 @@ void Foam::forceModels::electrophoretic::addForce
 {
     const List<vector>& x = chains.positions();
 
-    if (hostCell_.size() != x.size())
-    {
-        hostCell_.setSize(x.size());
-        hostCell_ = -1;
-    }
+    labelList& hostCell = hostCells_.update(chains);
 
     forAll(x, i)
     {
         const point p = periodic_.wrap(x[i]);
-        hostCell_[i] = locateBead(search_, p, hostCell_[i]);
-        if (hostCell_[i] >= 0)
+        hostCell[i] = locateBead(search_, p, hostCell[i]);
+        if (hostCell[i] >= 0)
         {
             force[i] +=
-                charge_*interpolateField_->interpolate(p, hostCell_[i]);
+                charge_*interpolateField_->interpolate(p, hostCell[i]);
         }
     }
 }
