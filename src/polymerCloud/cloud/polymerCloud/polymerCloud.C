@@ -371,6 +371,19 @@ void Foam::polymerCloud::wrapChains()
 }
 
 
+void Foam::polymerCloud::integrateChains(const scalar deltaT)
+{
+    integration_->integrate
+    (
+        chains_,
+        drift(),
+        deltaT,
+        mesh_.time().timeIndex(),
+        seed_
+    );
+}
+
+
 void Foam::polymerCloud::recordUnconstrained()
 {
     if (!flow_->twoWay())
@@ -725,14 +738,7 @@ void Foam::polymerCloud::evolve()
     updateDrift();
     maxBeadsOutside_ = max(maxBeadsOutside_, flow_->nBeadsOutside());
     beadStepsOutside_ += flow_->nBeadsOutside();
-    integration_->integrate
-    (
-        chains_,
-        drift(),
-        deltaT,
-        runTime.timeIndex(),
-        seed_
-    );
+    integrateChains(deltaT);
 
     for (polymerCloudFunction& function : functions_)
     {
@@ -810,14 +816,7 @@ void Foam::polymerCloud::predictCoupling()
     // predictor differs from it by the flow only
     updateDrift();
     flow_->storePredictor();
-    integration_->integrate
-    (
-        chains_,
-        drift(),
-        deltaT,
-        runTime.timeIndex(),
-        seed_
-    );
+    integrateChains(deltaT);
     recordUnconstrained();
 
     // The rod tensions' displacement, for the momentum they pass on; the
