@@ -14,36 +14,49 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-bool Foam::tridiagonalSystem::thomas(UList<scalar>& rhs)
+bool Foam::tridiagonalSystem::factorise()
 {
     const label n = diagonal_.size();
-    scalar* factor = factor_.data();
+    scalar* reciprocal = reciprocalPivot_.data();
 
     scalar pivot = diagonal_[0];
     if (pivot == 0)
     {
         return false;
     }
-    factor[0] = upper_[0]/pivot;
-    rhs[0] /= pivot;
+    reciprocal[0] = 1/pivot;
 
     for (label i = 1; i < n; ++i)
     {
-        pivot = diagonal_[i] - lower_[i]*factor[i - 1];
+        pivot = diagonal_[i] - (lower_[i]*upper_[i - 1])/pivot;
         if (pivot == 0)
         {
             return false;
         }
-        factor[i] = upper_[i]/pivot;
-        rhs[i] = (rhs[i] - lower_[i]*rhs[i - 1])/pivot;
-    }
-
-    for (label i = n - 2; i >= 0; --i)
-    {
-        rhs[i] -= factor[i]*rhs[i + 1];
+        reciprocal[i] = 1/pivot;
     }
 
     return true;
+}
+
+
+void Foam::tridiagonalSystem::substitute(UList<scalar>& rhs) const
+{
+    const label n = diagonal_.size();
+    const scalar* reciprocal = reciprocalPivot_.cdata();
+
+    // L y = rhs, with L's multipliers lower_i/pivot_{i-1}
+    for (label i = 1; i < n; ++i)
+    {
+        rhs[i] -= (lower_[i]*reciprocal[i - 1])*rhs[i - 1];
+    }
+
+    // U x = y
+    rhs[n - 1] *= reciprocal[n - 1];
+    for (label i = n - 2; i >= 0; --i)
+    {
+        rhs[i] = (rhs[i] - upper_[i]*rhs[i + 1])*reciprocal[i];
+    }
 }
 
 
@@ -55,7 +68,7 @@ void Foam::tridiagonalSystem::resize(const label n)
     diagonal_.resize(n);
     upper_.resize(n);
     source_.resize(n);
-    factor_.resize(n);
+    reciprocalPivot_.resize(n);
     correction_.resize(n);
 }
 
@@ -66,7 +79,12 @@ bool Foam::tridiagonalSystem::solve(const bool cyclic)
 
     if (!cyclic || n < 3)
     {
-        return thomas(source_);
+        if (!factorise())
+        {
+            return false;
+        }
+        substitute(source_);
+        return true;
     }
 
     // Sherman-Morrison: A = T + u v^T with T tridiagonal,
@@ -78,19 +96,22 @@ bool Foam::tridiagonalSystem::solve(const bool cyclic)
     diagonal_[0] -= gamma;
     diagonal_[n - 1] -= cornerLow*cornerHigh/gamma;
 
-    correction_ = Zero;
-    correction_[0] = gamma;
-    correction_[n - 1] = cornerHigh;
-
-    const bool ok = thomas(source_) && thomas(correction_);
+    const bool factorised = factorise();
 
     diagonal_[0] += gamma;
     diagonal_[n - 1] += cornerLow*cornerHigh/gamma;
 
-    if (!ok)
+    if (!factorised)
     {
         return false;
     }
+
+    correction_ = Zero;
+    correction_[0] = gamma;
+    correction_[n - 1] = cornerHigh;
+
+    substitute(source_);
+    substitute(correction_);
 
     const scalar denominator =
         1 + correction_[0] + cornerLow*correction_[n - 1]/gamma;
