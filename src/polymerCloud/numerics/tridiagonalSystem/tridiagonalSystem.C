@@ -17,23 +17,65 @@ License
 bool Foam::tridiagonalSystem::factorise()
 {
     const label n = diagonal_.size();
-    scalar* reciprocal = reciprocalPivot_.data();
+    const label m = middle();
+    const scalar* l = lower_.cdata();
+    const scalar* d = diagonal_.cdata();
+    const scalar* u = upper_.cdata();
+    scalar* pivot = pivot_.data();
 
-    scalar pivot = diagonal_[0];
-    if (pivot == 0)
+    // Down rows 1 to m - 1 (row k) and up rows n - 2 to m + 1 (row j) in
+    // one loop, for the two recurrences to overlap; the upward one has at
+    // most one row fewer. The last pivots are carried in registers: the
+    // compiler cannot tell that pivot does not alias the coefficients, and
+    // a store and reload would lengthen the recurrences.
+    scalar down = d[0];
+    scalar up = d[n - 1];
+    pivot[0] = down;
+    pivot[n - 1] = up;
+    for (label k = 1; k < m; ++k)
     {
-        return false;
-    }
-    reciprocal[0] = 1/pivot;
-
-    for (label i = 1; i < n; ++i)
-    {
-        pivot = diagonal_[i] - (lower_[i]*upper_[i - 1])/pivot;
-        if (pivot == 0)
+        const label j = n - 1 - k;
+        if (down == 0 || up == 0)
         {
             return false;
         }
-        reciprocal[i] = 1/pivot;
+        down = d[k] - l[k]*u[k - 1]/down;
+        pivot[k] = down;
+        if (j > m)
+        {
+            up = d[j] - u[j]*l[j + 1]/up;
+            pivot[j] = up;
+        }
+    }
+
+    // The middle row, eliminated from both sides
+    scalar middlePivot = d[m];
+    if (m > 0)
+    {
+        if (down == 0)
+        {
+            return false;
+        }
+        middlePivot -= l[m]*u[m - 1]/down;
+    }
+    if (m + 1 < n)
+    {
+        if (up == 0)
+        {
+            return false;
+        }
+        middlePivot -= u[m]*l[m + 1]/up;
+    }
+    if (middlePivot == 0)
+    {
+        return false;
+    }
+    pivot[m] = middlePivot;
+
+    scalar* reciprocal = reciprocalPivot_.data();
+    for (label i = 0; i < n; ++i)
+    {
+        reciprocal[i] = 1/pivot[i];
     }
 
     return true;
@@ -43,19 +85,54 @@ bool Foam::tridiagonalSystem::factorise()
 void Foam::tridiagonalSystem::substitute(UList<scalar>& rhs) const
 {
     const label n = diagonal_.size();
+    const label m = middle();
+    const scalar* l = lower_.cdata();
+    const scalar* u = upper_.cdata();
     const scalar* reciprocal = reciprocalPivot_.cdata();
+    scalar* x = rhs.data();
 
-    // L y = rhs, with L's multipliers lower_i/pivot_{i-1}
-    for (label i = 1; i < n; ++i)
+    // To the middle row from both ends, as the elimination (the running
+    // values in registers, as in factorise)
+    scalar down = x[0];
+    scalar up = x[n - 1];
+    for (label k = 1; k < m; ++k)
     {
-        rhs[i] -= (lower_[i]*reciprocal[i - 1])*rhs[i - 1];
+        const label j = n - 1 - k;
+        down = x[k] - (l[k]*reciprocal[k - 1])*down;
+        x[k] = down;
+        if (j > m)
+        {
+            up = x[j] - (u[j]*reciprocal[j + 1])*up;
+            x[j] = up;
+        }
     }
-
-    // U x = y
-    rhs[n - 1] *= reciprocal[n - 1];
-    for (label i = n - 2; i >= 0; --i)
+    scalar xm = x[m];
+    if (m > 0)
     {
-        rhs[i] = (rhs[i] - upper_[i]*rhs[i + 1])*reciprocal[i];
+        xm -= (l[m]*reciprocal[m - 1])*down;
+    }
+    if (m + 1 < n)
+    {
+        xm -= (u[m]*reciprocal[m + 1])*up;
+    }
+    xm *= reciprocal[m];
+    x[m] = xm;
+
+    // Out from the middle row both ways: up to row 0 (row i) and down to
+    // row n - 1 (row j), which has at most one row fewer
+    up = xm;
+    down = xm;
+    for (label k = 1; k <= m; ++k)
+    {
+        const label i = m - k;
+        const label j = m + k;
+        up = (x[i] - u[i]*up)*reciprocal[i];
+        x[i] = up;
+        if (j < n)
+        {
+            down = (x[j] - l[j]*down)*reciprocal[j];
+            x[j] = down;
+        }
     }
 }
 
@@ -68,6 +145,7 @@ void Foam::tridiagonalSystem::resize(const label n)
     diagonal_.resize(n);
     upper_.resize(n);
     source_.resize(n);
+    pivot_.resize(n);
     reciprocalPivot_.resize(n);
     correction_.resize(n);
 }
