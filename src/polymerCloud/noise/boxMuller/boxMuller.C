@@ -22,6 +22,25 @@ License
 #include <cstdint>
 #include <cstring>
 
+// * * * * * * * * * * * * * * * * Dispatch  * * * * * * * * * * * * * * * //
+
+// On x86-64 the transform is compiled twice, for the baseline (SSE2) and
+// for AVX2 (twice the lanes), and the loader picks the one the processor
+// runs (function multiversioning, GCC 6 and Clang 14 on). Not FMA: fused
+// multiply-adds would change the rounding, where these two give the same
+// bits, so results do not depend on the processor.
+#if defined(__x86_64__) && defined(__has_attribute)
+    #if __has_attribute(target_clones)
+        #define BOX_MULLER_TARGETS \
+            __attribute__((target_clones("avx2", "default")))
+    #endif
+#endif
+
+#ifndef BOX_MULLER_TARGETS
+    #define BOX_MULLER_TARGETS
+#endif
+
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace Foam
@@ -146,6 +165,7 @@ static inline void sinCosTurn(const double u, double& s, double& c)
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
+BOX_MULLER_TARGETS
 void Foam::boxMuller::transform(const label nPairs, scalar* u)
 {
     // One pair after another, with no dependence between them: the
