@@ -63,10 +63,9 @@ Foam::constraintModels::newton::newton(const dictionary& dict)
         )
     ),
     reference_(),
-    velocityStart_(),
     rods_(),
     system_(),
-    step_()
+    solution_()
 {}
 
 
@@ -90,6 +89,21 @@ void Foam::constraintModels::newton::padRods
     }
     rods[0] = type.ring() ? rods[nRods] : vector::zero;
     rods[nRods + 1] = type.ring() ? rods[1] : vector::zero;
+}
+
+
+void Foam::constraintModels::newton::padSolution(const chainType& type) const
+{
+    const label nRods = type.nRods();
+    const UList<scalar>& solution = system_.source();
+
+    solution_.resize(nRods + 2);
+    for (label k = 0; k < nRods; ++k)
+    {
+        solution_[k + 1] = solution[k];
+    }
+    solution_[0] = type.ring() ? solution[nRods - 1] : 0;
+    solution_[nRods + 1] = type.ring() ? solution[0] : 0;
 }
 
 
@@ -137,15 +151,48 @@ void Foam::constraintModels::newton::shift
 {
     const label n = type.nBeads();
     const label nRods = type.nRods();
+
+    // d[k] is the direction of rod k and g[k] its step
     const vector* d = rods_.cdata() + 1;
+    const scalar* g = solution_.cdata() + 1;
 
     for (label k = 0; k < nRods; ++k)
     {
         const label j = (k + 1 < n) ? k + 1 : 0;
-        const vector dx = (alpha*step_[k])*d[k];
+        const vector dx = (alpha*g[k])*d[k];
         x[k] -= dx;
         x[j] += dx;
     }
+}
+
+
+Foam::scalar Foam::constraintModels::newton::kick
+(
+    vector* v,
+    const chainType& type
+) const
+{
+    const label n = type.nBeads();
+
+    // r[k] is rod k and m[k] its kick, r[k - 1], m[k - 1] its neighbour's:
+    // bead i's velocity changes by m[i] r[i] - m[i - 1] r[i - 1]
+    const vector* r = rods_.cdata() + 1;
+    const scalar* m = solution_.cdata() + 1;
+
+    // Each rod's relative velocity once both its beads have their kicks
+    scalar largest = 0;
+    v[0] += m[0]*r[0] - m[-1]*r[-1];
+    for (label k = 0; k + 1 < n; ++k)
+    {
+        v[k + 1] += m[k + 1]*r[k + 1] - m[k]*r[k];
+        largest = max(largest, mag(r[k] & (v[k + 1] - v[k])));
+    }
+    if (type.ring())
+    {
+        largest = max(largest, mag(r[n - 1] & (v[0] - v[n - 1])));
+    }
+
+    return largest;
 }
 
 
@@ -158,7 +205,7 @@ Foam::scalar Foam::constraintModels::newton::lineSearch
 {
     // The system is rebuilt at once: its residual tests the step, and in
     // the usual case (a full step) it is the next iteration's system
-    step_ = system_.source();
+    padSolution(type);
 
     scalar alpha = 1;
     shift(x, type, alpha);
@@ -172,6 +219,46 @@ Foam::scalar Foam::constraintModels::newton::lineSearch
     }
 
     return residual;
+}
+
+
+Foam::label Foam::constraintModels::newton::solveLengths
+(
+    vector* x,
+    const chainType& type,
+    scalar& residual
+) const
+{
+    // Newton's iteration converges quadratically near the solution; far
+    // from it (large errors, as rod-rod collisions can leave) the step is
+    // halved until the residual falls. A residual that still grows three
+    // times running means there is no solution near.
+    scalar lastResidual = GREAT;
+    label nGrowing = 0;
+
+    residual = linearise(x, type);
+    for (label iter = 0; iter <= maxIterations_; ++iter)
+    {
+        if (residual <= tolerance_)
+        {
+            return max(iter, 1);
+        }
+        nGrowing = (residual > lastResidual) ? nGrowing + 1 : 0;
+        lastResidual = residual;
+        if
+        (
+            nGrowing == 3
+         || iter == maxIterations_
+         || !system_.solve(type.ring())
+        )
+        {
+            return -max(iter, 1);
+        }
+
+        residual = lineSearch(x, type, lastResidual);
+    }
+
+    return -maxIterations_;
 }
 
 
@@ -193,31 +280,10 @@ Foam::label Foam::constraintModels::newton::iterate
     system_.resize(type.nRods());
     padRods(rc, type, rods_);
 
-    // Newton's iteration converges quadratically near the solution; far
-    // from it (large errors, as rod-rod collisions can leave) the step is
-    // halved until the residual falls. A residual that still grows three
-    // times running means there is no solution near.
-    label result = -maxIterations_;
-    scalar lastResidual = GREAT;
-    label nGrowing = 0;
-
-    residual = linearise(x, type);
-    for (label iter = 0; iter <= maxIterations_; ++iter)
+    const label result = solveLengths(x, type, residual);
+    if (result < 0)
     {
-        if (residual <= tolerance_)
-        {
-            result = max(iter, 1);
-            break;
-        }
-        nGrowing = (residual > lastResidual) ? nGrowing + 1 : 0;
-        lastResidual = residual;
-        if (nGrowing == 3 || iter == maxIterations_ || !system_.solve(type.ring()))
-        {
-            result = -max(iter, 1);
-            break;
-        }
-
-        residual = lineSearch(x, type, lastResidual);
+        return result;
     }
 
     // The velocities move with the beads, from x* (as the retry in
@@ -248,9 +314,9 @@ Foam::label Foam::constraintModels::newton::correctChainLengths
     const label first = chains.start(chaini);
     const label n = chains.size(chaini);
 
-    // x* itself: the end directions, and the state to retry from
+    // x* itself: the end directions, and the state to retry from (a
+    // failed solve leaves the velocities at v*)
     reference_ = SubList<vector>(chains.positions(), n, first);
-    velocityStart_ = SubList<vector>(chains.velocities(), n, first);
 
     if (directions_ == SHAKE::directionType::end)
     {
@@ -270,7 +336,6 @@ Foam::label Foam::constraintModels::newton::correctChainLengths
     // to reach the lengths (a rod-rod collision in the last step can have
     // bent them): retry along the rods of x*
     SubList<vector>(chains.positions(), n, first) = reference_;
-    SubList<vector>(chains.velocities(), n, first) = velocityStart_;
     const label retry =
         iterate(chains, chaini, reference_.cdata(), deltaT, residual);
 
@@ -301,7 +366,7 @@ Foam::label Foam::constraintModels::newton::correctChainVelocities
     scalar* lower = system_.lower().data();
     scalar* diagonal = system_.diagonal().data();
     scalar* upper = system_.upper().data();
-    scalar* kick = system_.source().data();
+    scalar* source = system_.source().data();
 
     for (label k = 0; k < nRods; ++k)
     {
@@ -309,28 +374,21 @@ Foam::label Foam::constraintModels::newton::correctChainVelocities
         lower[k] = -(r[k] & r[k - 1]);
         diagonal[k] = 2*(r[k] & r[k]);
         upper[k] = -(r[k] & r[k + 1]);
-        kick[k] = r[k] & (v[j] - v[k]);
+        source[k] = r[k] & (v[j] - v[k]);
     }
 
+    // A failed solve leaves the velocities, and has their residual measured
     const bool solved = system_.solve(type.ring());
-
     if (solved)
     {
-        for (label k = 0; k < nRods; ++k)
-        {
-            const label j = (k + 1 < n) ? k + 1 : 0;
-            const vector dv = kick[k]*r[k];
-            v[k] += dv;
-            v[j] -= dv;
-        }
+        padSolution(type);
     }
-
-    residual = 0;
-    for (label k = 0; k < nRods; ++k)
+    else
     {
-        const label j = (k + 1 < n) ? k + 1 : 0;
-        residual = max(residual, mag(r[k] & (v[j] - v[k])));
+        solution_.resize(nRods + 2);
+        solution_ = Zero;
     }
+    residual = kick(v, type);
     residual /= velocityScale(type, v, n, velocityTolerance_);
 
     return (solved && residual <= velocityTolerance_) ? 1 : -1;
