@@ -14,75 +14,84 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-bool Foam::tridiagonalSystem::factorise()
+bool Foam::tridiagonalSystem::eliminate(UList<scalar>& rhs)
 {
     const label n = diagonal_.size();
     const label m = middle();
     const scalar* l = lower_.cdata();
     const scalar* d = diagonal_.cdata();
     const scalar* u = upper_.cdata();
-    scalar* pivot = pivot_.data();
+    scalar* reciprocal = reciprocalPivot_.data();
+    scalar* x = rhs.data();
+
+    if (d[0] == 0 || d[n - 1] == 0)
+    {
+        return false;
+    }
 
     // Down rows 1 to m - 1 (row k) and up rows n - 2 to m + 1 (row j) in
-    // one loop, for the two recurrences to overlap; the upward one has at
-    // most one row fewer. The last pivots are carried in registers: the
-    // compiler cannot tell that pivot does not alias the coefficients, and
-    // a store and reload would lengthen the recurrences.
-    scalar down = d[0];
-    scalar up = d[n - 1];
-    pivot[0] = down;
-    pivot[n - 1] = up;
+    // one loop, for the recurrences to overlap; the upward one has at most
+    // one row fewer. The running values are carried in registers: the
+    // compiler cannot tell that the arrays do not alias, and a store and
+    // reload would lengthen the recurrences.
+    scalar down = 1/d[0];
+    scalar up = 1/d[n - 1];
+    scalar xDown = x[0];
+    scalar xUp = x[n - 1];
+    reciprocal[0] = down;
+    reciprocal[n - 1] = up;
     for (label k = 1; k < m; ++k)
     {
-        const label j = n - 1 - k;
-        if (down == 0 || up == 0)
+        const scalar pivot = d[k] - (l[k]*u[k - 1])*down;
+        xDown = x[k] - (l[k]*down)*xDown;
+        x[k] = xDown;
+        if (pivot == 0)
         {
             return false;
         }
-        down = d[k] - l[k]*u[k - 1]/down;
-        pivot[k] = down;
+        down = 1/pivot;
+        reciprocal[k] = down;
+
+        const label j = n - 1 - k;
         if (j > m)
         {
-            up = d[j] - u[j]*l[j + 1]/up;
-            pivot[j] = up;
+            const scalar pivot = d[j] - (u[j]*l[j + 1])*up;
+            xUp = x[j] - (u[j]*up)*xUp;
+            x[j] = xUp;
+            if (pivot == 0)
+            {
+                return false;
+            }
+            up = 1/pivot;
+            reciprocal[j] = up;
         }
     }
 
     // The middle row, eliminated from both sides
-    scalar middlePivot = d[m];
+    scalar pivot = d[m];
+    scalar xm = x[m];
     if (m > 0)
     {
-        if (down == 0)
-        {
-            return false;
-        }
-        middlePivot -= l[m]*u[m - 1]/down;
+        pivot -= (l[m]*u[m - 1])*down;
+        xm -= (l[m]*down)*xDown;
     }
     if (m + 1 < n)
     {
-        if (up == 0)
-        {
-            return false;
-        }
-        middlePivot -= u[m]*l[m + 1]/up;
+        pivot -= (u[m]*l[m + 1])*up;
+        xm -= (u[m]*up)*xUp;
     }
-    if (middlePivot == 0)
+    if (pivot == 0)
     {
         return false;
     }
-    pivot[m] = middlePivot;
-
-    scalar* reciprocal = reciprocalPivot_.data();
-    for (label i = 0; i < n; ++i)
-    {
-        reciprocal[i] = 1/pivot[i];
-    }
+    reciprocal[m] = 1/pivot;
+    x[m] = xm*reciprocal[m];
 
     return true;
 }
 
 
-void Foam::tridiagonalSystem::substitute(UList<scalar>& rhs) const
+void Foam::tridiagonalSystem::forwardSubstitute(UList<scalar>& rhs) const
 {
     const label n = diagonal_.size();
     const label m = middle();
@@ -91,47 +100,57 @@ void Foam::tridiagonalSystem::substitute(UList<scalar>& rhs) const
     const scalar* reciprocal = reciprocalPivot_.cdata();
     scalar* x = rhs.data();
 
-    // To the middle row from both ends, as the elimination (the running
-    // values in registers, as in factorise)
-    scalar down = x[0];
-    scalar up = x[n - 1];
+    // As in eliminate
+    scalar xDown = x[0];
+    scalar xUp = x[n - 1];
     for (label k = 1; k < m; ++k)
     {
         const label j = n - 1 - k;
-        down = x[k] - (l[k]*reciprocal[k - 1])*down;
-        x[k] = down;
+        xDown = x[k] - (l[k]*reciprocal[k - 1])*xDown;
+        x[k] = xDown;
         if (j > m)
         {
-            up = x[j] - (u[j]*reciprocal[j + 1])*up;
-            x[j] = up;
+            xUp = x[j] - (u[j]*reciprocal[j + 1])*xUp;
+            x[j] = xUp;
         }
     }
+
     scalar xm = x[m];
     if (m > 0)
     {
-        xm -= (l[m]*reciprocal[m - 1])*down;
+        xm -= (l[m]*reciprocal[m - 1])*xDown;
     }
     if (m + 1 < n)
     {
-        xm -= (u[m]*reciprocal[m + 1])*up;
+        xm -= (u[m]*reciprocal[m + 1])*xUp;
     }
-    xm *= reciprocal[m];
-    x[m] = xm;
+    x[m] = xm*reciprocal[m];
+}
 
-    // Out from the middle row both ways: up to row 0 (row i) and down to
-    // row n - 1 (row j), which has at most one row fewer
-    up = xm;
-    down = xm;
+
+void Foam::tridiagonalSystem::backSubstitute(UList<scalar>& rhs) const
+{
+    const label n = diagonal_.size();
+    const label m = middle();
+    const scalar* l = lower_.cdata();
+    const scalar* u = upper_.cdata();
+    const scalar* reciprocal = reciprocalPivot_.cdata();
+    scalar* x = rhs.data();
+
+    // Up to row 0 (row i) and down to row n - 1 (row j), which has at most
+    // one row fewer
+    scalar xUp = x[m];
+    scalar xDown = x[m];
     for (label k = 1; k <= m; ++k)
     {
         const label i = m - k;
         const label j = m + k;
-        up = (x[i] - u[i]*up)*reciprocal[i];
-        x[i] = up;
+        xUp = (x[i] - u[i]*xUp)*reciprocal[i];
+        x[i] = xUp;
         if (j < n)
         {
-            down = (x[j] - l[j]*down)*reciprocal[j];
-            x[j] = down;
+            xDown = (x[j] - l[j]*xDown)*reciprocal[j];
+            x[j] = xDown;
         }
     }
 }
@@ -145,7 +164,6 @@ void Foam::tridiagonalSystem::resize(const label n)
     diagonal_.resize(n);
     upper_.resize(n);
     source_.resize(n);
-    pivot_.resize(n);
     reciprocalPivot_.resize(n);
     correction_.resize(n);
 }
@@ -157,11 +175,11 @@ bool Foam::tridiagonalSystem::solve(const bool cyclic)
 
     if (!cyclic || n < 3)
     {
-        if (!factorise())
+        if (!eliminate(source_))
         {
             return false;
         }
-        substitute(source_);
+        backSubstitute(source_);
         return true;
     }
 
@@ -174,12 +192,12 @@ bool Foam::tridiagonalSystem::solve(const bool cyclic)
     diagonal_[0] -= gamma;
     diagonal_[n - 1] -= cornerLow*cornerHigh/gamma;
 
-    const bool factorised = factorise();
+    const bool eliminated = eliminate(source_);
 
     diagonal_[0] += gamma;
     diagonal_[n - 1] += cornerLow*cornerHigh/gamma;
 
-    if (!factorised)
+    if (!eliminated)
     {
         return false;
     }
@@ -187,9 +205,10 @@ bool Foam::tridiagonalSystem::solve(const bool cyclic)
     correction_ = Zero;
     correction_[0] = gamma;
     correction_[n - 1] = cornerHigh;
+    forwardSubstitute(correction_);
 
-    substitute(source_);
-    substitute(correction_);
+    backSubstitute(source_);
+    backSubstitute(correction_);
 
     const scalar denominator =
         1 + correction_[0] + cornerLow*correction_[n - 1]/gamma;
