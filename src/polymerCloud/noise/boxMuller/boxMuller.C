@@ -140,8 +140,8 @@ static inline void sinCosKernel(const double t, double& s, double& c)
 static inline void sinCosTurn(const double u, double& s, double& c)
 {
     // 2 pi u = q pi/2 + t: quarter turns x = 4 u, q = round(x) by adding
-    // 1.5 2^52 (x is never halfway), after which the low bits of the sum
-    // are those of q; x - q is exact
+    // 1.5 2^52 (a tie goes to even, |t| <= pi/4 either way), after which
+    // the low bits of the sum are those of q; x - q is exact
     const double x = 4*u;
     const double round = 6755399441055744.0;
     const uint64_t qBits = bitsOf(x + round);
