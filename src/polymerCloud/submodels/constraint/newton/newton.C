@@ -63,9 +63,241 @@ Foam::constraintModels::newton::newton(const dictionary& dict)
         )
     ),
     reference_(),
-    velocityStart_(),
-    system_()
+    rods_(),
+    system_(),
+    solution_()
 {}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::constraintModels::newton::padRods
+(
+    const vector* x,
+    const chainType& type,
+    DynamicList<vector>& rods
+)
+{
+    const label n = type.nBeads();
+    const label nRods = type.nRods();
+
+    rods.resize(nRods + 2);
+    for (label k = 0; k < nRods; ++k)
+    {
+        const label j = (k + 1 < n) ? k + 1 : 0;
+        rods[k + 1] = x[j] - x[k];
+    }
+    rods[0] = type.ring() ? rods[nRods] : vector::zero;
+    rods[nRods + 1] = type.ring() ? rods[1] : vector::zero;
+}
+
+
+void Foam::constraintModels::newton::padSolution(const chainType& type) const
+{
+    const label nRods = type.nRods();
+    const UList<scalar>& solution = system_.source();
+
+    solution_.resize(nRods + 2);
+    for (label k = 0; k < nRods; ++k)
+    {
+        solution_[k + 1] = solution[k];
+    }
+    solution_[0] = type.ring() ? solution[nRods - 1] : 0;
+    solution_[nRods + 1] = type.ring() ? solution[0] : 0;
+}
+
+
+Foam::scalar Foam::constraintModels::newton::linearise
+(
+    const vector* x,
+    const chainType& type
+) const
+{
+    const label n = type.nBeads();
+    const label nRods = type.nRods();
+    const scalar a2 = sqr(type.rodLength());
+
+    // d[k] is the direction of rod k, d[k - 1] and d[k + 1] its neighbours'
+    const vector* d = rods_.cdata() + 1;
+    scalar* lower = system_.lower().data();
+    scalar* diagonal = system_.diagonal().data();
+    scalar* upper = system_.upper().data();
+    scalar* source = system_.source().data();
+
+    scalar largest = 0;
+    for (label k = 0; k < nRods; ++k)
+    {
+        const label j = (k + 1 < n) ? k + 1 : 0;
+        const vector s = x[j] - x[k];
+        const scalar sigma = (s & s) - a2;
+        largest = max(largest, mag(sigma));
+
+        lower[k] = -2*(s & d[k - 1]);
+        diagonal[k] = 4*(s & d[k]);
+        upper[k] = -2*(s & d[k + 1]);
+        source[k] = -sigma;
+    }
+
+    return largest/(2*a2);
+}
+
+
+void Foam::constraintModels::newton::shift
+(
+    vector* x,
+    const chainType& type,
+    const scalar alpha
+) const
+{
+    const label n = type.nBeads();
+    const label nRods = type.nRods();
+
+    // d[k] is the direction of rod k and g[k] its step
+    const vector* d = rods_.cdata() + 1;
+    const scalar* g = solution_.cdata() + 1;
+
+    for (label k = 0; k < nRods; ++k)
+    {
+        const label j = (k + 1 < n) ? k + 1 : 0;
+        const vector dx = (alpha*g[k])*d[k];
+        x[k] -= dx;
+        x[j] += dx;
+    }
+}
+
+
+Foam::scalar Foam::constraintModels::newton::kick
+(
+    vector* v,
+    const chainType& type
+) const
+{
+    const label n = type.nBeads();
+
+    // r[k] is rod k and m[k] its kick, r[k - 1], m[k - 1] its neighbour's:
+    // bead i's velocity changes by m[i] r[i] - m[i - 1] r[i - 1]
+    const vector* r = rods_.cdata() + 1;
+    const scalar* m = solution_.cdata() + 1;
+
+    // Each rod's relative velocity once both its beads have their kicks
+    scalar largest = 0;
+    v[0] += m[0]*r[0] - m[-1]*r[-1];
+    for (label k = 0; k + 1 < n; ++k)
+    {
+        v[k + 1] += m[k + 1]*r[k + 1] - m[k]*r[k];
+        largest = max(largest, mag(r[k] & (v[k + 1] - v[k])));
+    }
+    if (type.ring())
+    {
+        largest = max(largest, mag(r[n - 1] & (v[0] - v[n - 1])));
+    }
+
+    return largest;
+}
+
+
+Foam::scalar Foam::constraintModels::newton::lineSearch
+(
+    vector* x,
+    const chainType& type,
+    const scalar lastResidual
+) const
+{
+    // The system is rebuilt at once: its residual tests the step, and in
+    // the usual case (a full step) it is the next iteration's system
+    padSolution(type);
+
+    scalar alpha = 1;
+    shift(x, type, alpha);
+    scalar residual = linearise(x, type);
+
+    for (int halving = 0; halving < 8 && residual >= lastResidual; ++halving)
+    {
+        shift(x, type, -0.5*alpha);
+        alpha *= 0.5;
+        residual = linearise(x, type);
+    }
+
+    return residual;
+}
+
+
+Foam::label Foam::constraintModels::newton::solveLengths
+(
+    vector* x,
+    const chainType& type,
+    scalar& residual
+) const
+{
+    // Newton's iteration converges quadratically near the solution; far
+    // from it (large errors, as rod-rod collisions can leave) the step is
+    // halved until the residual falls. A residual that still grows three
+    // times running means there is no solution near.
+    scalar lastResidual = GREAT;
+    label nGrowing = 0;
+
+    residual = linearise(x, type);
+    for (label iter = 0; iter <= maxIterations_; ++iter)
+    {
+        if (residual <= tolerance_)
+        {
+            return max(iter, 1);
+        }
+        nGrowing = (residual > lastResidual) ? nGrowing + 1 : 0;
+        lastResidual = residual;
+        if
+        (
+            nGrowing == 3
+         || iter == maxIterations_
+         || !system_.solve(type.ring())
+        )
+        {
+            return -max(iter, 1);
+        }
+
+        residual = lineSearch(x, type, lastResidual);
+    }
+
+    return -maxIterations_;
+}
+
+
+Foam::label Foam::constraintModels::newton::iterate
+(
+    polymerChains& chains,
+    const label chaini,
+    const vector* rc,
+    const scalar deltaT,
+    scalar& residual
+) const
+{
+    const chainType& type = chains.type(chaini);
+    const label first = chains.start(chaini);
+    const label n = type.nBeads();
+
+    vector* x = chains.positions().data() + first;
+
+    system_.resize(type.nRods());
+    padRods(rc, type, rods_);
+
+    const label result = solveLengths(x, type, residual);
+    if (result < 0)
+    {
+        return result;
+    }
+
+    // The velocities move with the beads, from x* (as the retry in
+    // correctChainLengths, every solve starts there)
+    const vector* xStar = reference_.cdata();
+    vector* v = chains.velocities().data() + first;
+    const scalar oneByDeltaT = 1/deltaT;
+    for (label i = 0; i < n; ++i)
+    {
+        v[i] += oneByDeltaT*(x[i] - xStar[i]);
+    }
+
+    return result;
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -82,9 +314,9 @@ Foam::label Foam::constraintModels::newton::correctChainLengths
     const label first = chains.start(chaini);
     const label n = chains.size(chaini);
 
-    // x* itself: the end directions, and the state to retry from
+    // x* itself: the end directions, and the state to retry from (a
+    // failed solve leaves the velocities at v*)
     reference_ = SubList<vector>(chains.positions(), n, first);
-    velocityStart_ = SubList<vector>(chains.velocities(), n, first);
 
     if (directions_ == SHAKE::directionType::end)
     {
@@ -104,120 +336,10 @@ Foam::label Foam::constraintModels::newton::correctChainLengths
     // to reach the lengths (a rod-rod collision in the last step can have
     // bent them): retry along the rods of x*
     SubList<vector>(chains.positions(), n, first) = reference_;
-    SubList<vector>(chains.velocities(), n, first) = velocityStart_;
     const label retry =
         iterate(chains, chaini, reference_.cdata(), deltaT, residual);
 
     return (retry > 0) ? retry - iter : retry + iter;
-}
-
-
-Foam::label Foam::constraintModels::newton::iterate
-(
-    polymerChains& chains,
-    const label chaini,
-    const vector* rc,
-    const scalar deltaT,
-    scalar& residual
-) const
-{
-    const chainType& type = chains.type(chaini);
-    const label first = chains.start(chaini);
-    const label n = type.nBeads();
-    const label nRods = type.nRods();
-    const bool ring = type.ring();
-    const scalar a2 = sqr(type.rodLength());
-
-    vector* x = chains.positions().data() + first;
-    vector* v = chains.velocities().data() + first;
-
-    system_.resize(nRods);
-    UList<scalar>& lower = system_.lower();
-    UList<scalar>& diagonal = system_.diagonal();
-    UList<scalar>& upper = system_.upper();
-    UList<scalar>& step = system_.source();
-
-    const scalar oneByDeltaT = 1/deltaT;
-
-    // Move the beads by alpha times the Newton step along the directions
-    auto shiftBy = [&](const scalar alpha)
-    {
-        for (label k = 0; k < nRods; ++k)
-        {
-            const label j = (k + 1 < n) ? k + 1 : 0;
-            const vector shift = alpha*step[k]*(rc[j] - rc[k]);
-            x[k] -= shift;
-            x[j] += shift;
-            v[k] -= oneByDeltaT*shift;
-            v[j] += oneByDeltaT*shift;
-        }
-    };
-
-    // Largest relative length error at the current positions
-    auto lengthResidual = [&]()
-    {
-        scalar largest = 0;
-        for (label k = 0; k < nRods; ++k)
-        {
-            const label j = (k + 1 < n) ? k + 1 : 0;
-            largest = max(largest, mag(magSqr(x[j] - x[k]) - a2));
-        }
-        return largest/(2*a2);
-    };
-
-    // Newton's iteration converges quadratically near the solution; far
-    // from it (large errors, as rod-rod collisions can leave) the step is
-    // halved until the residual falls. A residual that still grows three
-    // times running means there is no solution near.
-    scalar lastResidual = GREAT;
-    label nGrowing = 0;
-
-    for (label iter = 0; iter <= maxIterations_; ++iter)
-    {
-        // Residuals and the Jacobian at the current positions
-        residual = 0;
-        for (label k = 0; k < nRods; ++k)
-        {
-            const label j = (k + 1 < n) ? k + 1 : 0;
-            const label before = (k > 0) ? k - 1 : nRods - 1;
-            const label after = (k + 1 < nRods) ? k + 1 : 0;
-
-            const vector s = x[j] - x[k];
-            const scalar sigma = (s & s) - a2;
-            residual = max(residual, mag(sigma));
-
-            diagonal[k] = 4*(s & (rc[j] - rc[k]));
-            lower[k] = -2*(s & (rc[k] - rc[before]));
-            upper[k] = -2*(s & (rc[(after + 1) % n] - rc[after]));
-            step[k] = -sigma;
-        }
-        residual /= 2*a2;
-
-        if (residual <= tolerance_)
-        {
-            return max(iter, 1);
-        }
-        nGrowing = (residual > lastResidual) ? nGrowing + 1 : 0;
-        lastResidual = residual;
-        if (nGrowing == 3 || iter == maxIterations_ || !system_.solve(ring))
-        {
-            return -max(iter, 1);
-        }
-
-        scalar alpha = 1;
-        shiftBy(alpha);
-        for (int halving = 0; halving < 8; ++halving)
-        {
-            if (lengthResidual() < residual)
-            {
-                break;
-            }
-            shiftBy(-0.5*alpha);
-            alpha *= 0.5;
-        }
-    }
-
-    return -maxIterations_;
 }
 
 
@@ -237,43 +359,36 @@ Foam::label Foam::constraintModels::newton::correctChainVelocities
     vector* v = chains.velocities().data() + first;
 
     system_.resize(nRods);
-    UList<scalar>& lower = system_.lower();
-    UList<scalar>& diagonal = system_.diagonal();
-    UList<scalar>& upper = system_.upper();
-    UList<scalar>& kick = system_.source();
+    padRods(x, type, rods_);
+
+    // r[k] is rod k, r[k - 1] and r[k + 1] its neighbours
+    const vector* r = rods_.cdata() + 1;
+    scalar* lower = system_.lower().data();
+    scalar* diagonal = system_.diagonal().data();
+    scalar* upper = system_.upper().data();
+    scalar* source = system_.source().data();
 
     for (label k = 0; k < nRods; ++k)
     {
         const label j = (k + 1 < n) ? k + 1 : 0;
-        const label previous = (k > 0) ? k - 1 : nRods - 1;
-        const label next = (k + 1 < nRods) ? k + 1 : 0;
-
-        const vector r = x[j] - x[k];
-        diagonal[k] = 2*(r & r);
-        lower[k] = -(r & (x[k] - x[previous]));
-        upper[k] = -(r & (x[(next + 1) % n] - x[next]));
-        kick[k] = r & (v[j] - v[k]);
+        lower[k] = -(r[k] & r[k - 1]);
+        diagonal[k] = 2*(r[k] & r[k]);
+        upper[k] = -(r[k] & r[k + 1]);
+        source[k] = r[k] & (v[j] - v[k]);
     }
 
+    // A failed solve leaves the velocities, and has their residual measured
     const bool solved = system_.solve(type.ring());
-
     if (solved)
     {
-        for (label k = 0; k < nRods; ++k)
-        {
-            const label j = (k + 1 < n) ? k + 1 : 0;
-            const vector dv = kick[k]*(x[j] - x[k]);
-            v[k] += dv;
-            v[j] -= dv;
-        }
+        padSolution(type);
     }
-
-    residual = 0;
-    for (label k = 0; k < nRods; ++k)
+    else
     {
-        const label j = (k + 1 < n) ? k + 1 : 0;
-        residual = max(residual, mag((x[j] - x[k]) & (v[j] - v[k])));
+        solution_.resize(nRods + 2);
+        solution_ = Zero;
     }
+    residual = kick(v, type);
     residual /= velocityScale(type, v, n, velocityTolerance_);
 
     return (solved && residual <= velocityTolerance_) ? 1 : -1;

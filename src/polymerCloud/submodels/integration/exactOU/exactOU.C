@@ -95,7 +95,8 @@ Foam::integrationModels::exactOU::exactOU(const dictionary& dict)
 :
     integrationModel(typeName, dict),
     cache_(),
-    cachedDeltaT_(-1)
+    cachedDeltaT_(-1),
+    xi_()
 {}
 
 
@@ -124,22 +125,24 @@ void Foam::integrationModels::exactOU::integrateChain
     }
 
     const coefficients& k = cache_[chains.typeIndex(chaini)];
-    const chainNoise noise(seed, chains.globalId(chaini));
     const label first = chains.start(chaini);
+    const label n = chains.size(chaini);
 
-    vector* x = chains.positions().data();
-    vector* v = chains.velocities().data();
-    const vector* u = driftVelocity.cdata();
+    xi_.resize(6*n);
+    chainNoise(seed, chains.globalId(chaini)).sixNormals
+    (
+        timeIndex, chainNoise::stepStream0, subStepKey, n, xi_.data()
+    );
 
-    for (label i = first; i < chains.end(chaini); ++i)
+    vector* x = chains.positions().data() + first;
+    vector* v = chains.velocities().data() + first;
+    const vector* u = driftVelocity.cdata() + first;
+    const scalar* xi = xi_.cdata();
+
+    for (label i = 0; i < n; ++i)
     {
-        scalar xi[6];
-        noise.sixNormals
-        (
-            timeIndex, i - first, chainNoise::stepStream0, subStepKey, xi
-        );
-        const vector xi1(xi[0], xi[1], xi[2]);
-        const vector xi2(xi[3], xi[4], xi[5]);
+        const vector xi1(xi[6*i], xi[6*i + 1], xi[6*i + 2]);
+        const vector xi2(xi[6*i + 3], xi[6*i + 4], xi[6*i + 5]);
 
         const vector relative = v[i] - u[i];
 
