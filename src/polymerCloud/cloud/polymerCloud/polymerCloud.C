@@ -769,8 +769,9 @@ void Foam::polymerCloud::evolve()
     }
 
     // The momentum the chains exchanged with the solvent (two-way): the
-    // constraint forces are internal, the collisions' and walls' to come
-    // are not exchanges with the solvent
+    // friction and noise of each bead's path, the constraint's included;
+    // the constraint and collision impulses are internal to the chains,
+    // and the walls' to come are not exchanges with the solvent
     if (flow_->twoWay())
     {
         flow_->depositMomentum

@@ -172,12 +172,19 @@ Foam::cloudFunctions::vtkChains::vtkChains
 
 void Foam::cloudFunctions::vtkChains::write()
 {
-    // Every processor's chains, written by the master
-    const polymerChains chains(cloud_.gatherChains());
+    // Every processor's chains, written by the master (a serial run's
+    // need no copy)
+    autoPtr<polymerChains> gathered;
+    if (Pstream::parRun())
+    {
+        gathered.reset(new polymerChains(cloud_.gatherChains()));
+    }
     if (!Pstream::master())
     {
         return;
     }
+    const polymerChains& chains =
+        gathered ? gathered() : cloud_.chains();
 
     const Time& runTime = cloud_.mesh().time();
 
