@@ -17,6 +17,7 @@ License
 #include "checkedInput.H"
 #include "cpuTime.H"
 #include "HashTable.H"
+#include "pointOwners.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -221,39 +222,21 @@ void Foam::polymerCloud::checkInsideMesh(const fileName& origin) const
     // processor's (collective)
     const List<vector>& x = chains_.positions();
     DynamicList<label> unheld;
-    List<pointField> points(Pstream::nProcs());
+    DynamicList<point> unheldPoints;
+    forAll(x, i)
     {
-        DynamicList<point> unheldPoints;
-        forAll(x, i)
+        const point p = periodic_.wrap(x[i]);
+        if (mesh_.findCell(p) < 0)
         {
-            const point p = periodic_.wrap(x[i]);
-            if (mesh_.findCell(p) < 0)
-            {
-                unheld.append(i);
-                unheldPoints.append(p);
-            }
+            unheld.append(i);
+            unheldPoints.append(p);
         }
-        points[Pstream::myProcNo()] = unheldPoints;
     }
-    Pstream::gatherList(points);
-    Pstream::scatterList(points);
+    const labelList owner(pointOwners(mesh_, unheldPoints));
 
-    List<boolList> found(points.size());
-    forAll(points, proci)
-    {
-        found[proci].setSize(points[proci].size());
-        forAll(points[proci], k)
-        {
-            found[proci][k] = (mesh_.findCell(points[proci][k]) >= 0);
-        }
-        Pstream::listCombineGather(found[proci], orEqOp<bool>());
-        Pstream::listCombineScatter(found[proci]);
-    }
-
-    const boolList& mine = found[Pstream::myProcNo()];
     forAll(unheld, k)
     {
-        if (mine[k])
+        if (owner[k] >= 0)
         {
             continue;
         }

@@ -19,6 +19,7 @@ Description
 #include "PstreamBuffers.H"
 #include "pointField.H"
 #include "clockTime.H"
+#include "pointOwners.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -126,64 +127,35 @@ void Foam::polymerCloud::distributeChains()
     const label myProc = Pstream::myProcNo();
     const label nProcs = Pstream::nProcs();
 
-    // Chains whose reference bead this processor's mesh does not hold (a
-    // point outside its bounding box needs no search)
+    // Chains whose reference bead this processor's mesh does not hold go
+    // to the processor that holds it; one that no processor holds (outside
+    // the mesh) stays where it is
     const boundBox& bounds = mesh_.bounds();
     DynamicList<label> leaving;
-    List<pointField> points(nProcs);
+    DynamicList<point> leavingPoints;
+    for (label c = 0; c < chains_.nChains(); ++c)
     {
-        DynamicList<point> leavingPoints;
-        for (label c = 0; c < chains_.nChains(); ++c)
+        const point p = periodic_.wrap(x[referenceBead(c)]);
+        if (!bounds.contains(p) || mesh_.findCell(p) < 0)
         {
-            const point p = periodic_.wrap(x[referenceBead(c)]);
-            if (!bounds.contains(p) || mesh_.findCell(p) < 0)
-            {
-                leaving.append(c);
-                leavingPoints.append(p);
-            }
+            leaving.append(c);
+            leavingPoints.append(p);
         }
-        points[myProc] = leavingPoints;
     }
-
-    // Every processor learns every leaving point and claims those its mesh
-    // holds; the lowest claiming processor takes the chain, and a chain no
-    // processor holds (outside the mesh) stays where it is
-    Pstream::gatherList(points);
-    Pstream::scatterList(points);
-
-    labelList offset(nProcs + 1, Zero);
-    forAll(points, proci)
-    {
-        offset[proci + 1] = offset[proci] + points[proci].size();
-    }
-    if (offset[nProcs] == 0)
+    if (returnReduce(leaving.empty(), andOp<bool>()))
     {
         migrationSeconds_ += clock.elapsedTime();
         return;
     }
-
-    labelList owner(offset[nProcs], labelMax);
-    forAll(points, proci)
-    {
-        forAll(points[proci], k)
-        {
-            const point& p = points[proci][k];
-            if (bounds.contains(p) && mesh_.findCell(p) >= 0)
-            {
-                owner[offset[proci] + k] = myProc;
-            }
-        }
-    }
-    Pstream::listCombineGather(owner, minEqOp<label>());
-    Pstream::listCombineScatter(owner);
+    const labelList owner(pointOwners(mesh_, leavingPoints));
 
     // Send each leaving chain to its new owner
     List<DynamicList<label>> toProc(nProcs);
     DynamicList<label> sent;
     forAll(leaving, k)
     {
-        const label proci = owner[offset[myProc] + k];
-        if (proci != labelMax && proci != myProc)
+        const label proci = owner[k];
+        if (proci >= 0 && proci != myProc)
         {
             toProc[proci].append(leaving[k]);
             sent.append(leaving[k]);
@@ -225,22 +197,17 @@ void Foam::polymerCloud::keepOwnChains()
     }
 
     const List<vector>& x = chains_.positions();
-    labelList owner(chains_.nChains(), labelMax);
-    forAll(owner, c)
+    pointField references(chains_.nChains());
+    forAll(references, c)
     {
-        if (mesh_.findCell(periodic_.wrap(x[referenceBead(c)])) >= 0)
-        {
-            owner[c] = Pstream::myProcNo();
-        }
+        references[c] = periodic_.wrap(x[referenceBead(c)]);
     }
-    Pstream::listCombineGather(owner, minEqOp<label>());
-    Pstream::listCombineScatter(owner);
+    const labelList owner(replicatedPointOwners(mesh_, references));
 
     DynamicList<label> others;
     forAll(owner, c)
     {
-        const label proci =
-            (owner[c] == labelMax) ? Pstream::masterNo() : owner[c];
+        const label proci = (owner[c] < 0) ? Pstream::masterNo() : owner[c];
         if (proci != Pstream::myProcNo())
         {
             others.append(c);

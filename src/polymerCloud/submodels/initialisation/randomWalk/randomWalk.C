@@ -12,6 +12,7 @@ License
 
 #include "randomWalk.H"
 #include "periodicImages.H"
+#include "pointOwners.H"
 #include "chainNoise.H"
 #include "checkedInput.H"
 #include "mathematicalConstants.H"
@@ -109,17 +110,12 @@ bool Foam::initialisationModels::randomWalk::inside
     // Each bead in some processor's mesh (every processor draws the same
     // chains and takes part), at its image inside the cyclic patches
     const periodicImages& periodic = periodicImages::New(mesh);
-    boolList found(x.size());
+    pointField images(x.size());
     forAll(x, i)
     {
-        found[i] = (mesh.findCell(periodic.wrap(x[i])) >= 0);
+        images[i] = periodic.wrap(x[i]);
     }
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(found, orEqOp<bool>());
-        Pstream::listCombineScatter(found);
-    }
-    return found.found(false) == false;
+    return !replicatedPointOwners(mesh, images).found(-1);
 }
 
 

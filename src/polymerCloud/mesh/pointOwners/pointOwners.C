@@ -1,0 +1,118 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "pointOwners.H"
+#include "pointField.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// This processor's claim on each point (its number, or labelMax)
+Foam::labelList claims
+(
+    const Foam::polyMesh& mesh,
+    const Foam::UList<Foam::point>& points
+)
+{
+    using namespace Foam;
+
+    const boundBox& bounds = mesh.bounds();
+    labelList claim(points.size(), labelMax);
+    forAll(points, i)
+    {
+        if (bounds.contains(points[i]) && mesh.findCell(points[i]) >= 0)
+        {
+            claim[i] = Pstream::myProcNo();
+        }
+    }
+    return claim;
+}
+
+
+// The lowest claim of every processor, labelMax as -1
+void lowestClaims(Foam::labelList& claim)
+{
+    using namespace Foam;
+
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(claim, minEqOp<label>());
+        Pstream::listCombineScatter(claim);
+    }
+    for (label& proci : claim)
+    {
+        if (proci == labelMax)
+        {
+            proci = -1;
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+Foam::labelList Foam::pointOwners
+(
+    const polyMesh& mesh,
+    const UList<point>& points
+)
+{
+    if (!Pstream::parRun())
+    {
+        return replicatedPointOwners(mesh, points);
+    }
+
+    // Every processor's points, one list
+    const label nProcs = Pstream::nProcs();
+    List<pointField> all(nProcs);
+    all[Pstream::myProcNo()] = points;
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+
+    labelList offset(nProcs + 1, Zero);
+    forAll(all, proci)
+    {
+        offset[proci + 1] = offset[proci] + all[proci].size();
+    }
+    pointField allPoints(offset[nProcs]);
+    forAll(all, proci)
+    {
+        SubList<point>(allPoints, all[proci].size(), offset[proci]) =
+            all[proci];
+    }
+
+    labelList claim(claims(mesh, allPoints));
+    lowestClaims(claim);
+    return labelList
+    (
+        SubList<label>(claim, points.size(), offset[Pstream::myProcNo()])
+    );
+}
+
+
+Foam::labelList Foam::replicatedPointOwners
+(
+    const polyMesh& mesh,
+    const UList<point>& points
+)
+{
+    labelList claim(claims(mesh, points));
+    lowestClaims(claim);
+    return claim;
+}
+
+
+// ************************************************************************* //
