@@ -78,32 +78,6 @@ const
         return;
     }
 
-    // A chain's beads may lie in other processors' meshes: models that
-    // look the beads up in the mesh would miss them there
-    word unsupported;
-    if (wall_->active())
-    {
-        unsupported = "wall " + wall_->type();
-    }
-    for (const forceModel& model : forces_)
-    {
-        if (model.usesMesh())
-        {
-            unsupported = "forces (" + model.type() + ")";
-        }
-    }
-
-    if (!unsupported.empty())
-    {
-        FatalIOErrorInFunction(subModels)
-            << unsupported << " in " << subModels.name() << " runs serially"
-            << " in this version: a chain's beads in other processors'"
-            << " meshes would not find their cells" << nl
-            << "    expected: a serial run, or in parallel wall none and"
-            << " forces without the mesh"
-            << exit(FatalIOError);
-    }
-
     if (collision_->type() != "none")
     {
         WarningInFunction

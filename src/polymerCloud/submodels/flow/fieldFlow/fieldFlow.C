@@ -11,7 +11,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fieldFlow.H"
-#include "locateBead.H"
 #include "PstreamBuffers.H"
 #include "clockTime.H"
 #include "volFields.H"
@@ -46,15 +45,8 @@ Foam::flowModels::fieldFlow::fieldFlow
     (
         coeffDict_.getOrDefault<word>("interpolation", "cellPoint")
     ),
-    search_(mesh),
-    periodic_(periodicImages::New(mesh)),
-    hostCells_(),
-    remoteOwners_(),
-    remoteCells_(),
-    unheldBead_(),
-    unheldPoint_(),
-    nOutside_(0),
-    exchangeSeconds_(0),
+    sampler_(mesh),
+    depositSeconds_(0),
     twoWay_
     (
         coeffDict_.getOrDefault<word>("coupling", "oneWay") == "twoWay"
@@ -144,105 +136,9 @@ Foam::flowModels::fieldFlow::fieldFlow
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::flowModels::fieldFlow::remoteVelocities
-(
-    const interpolation<vector>& interpolator,
-    const UList<point>& points,
-    labelList& owner,
-    labelList& cell,
-    vectorField& velocity
-) const
-{
-    const label nProcs = Pstream::nProcs();
-    const label myProc = Pstream::myProcNo();
-
-    // Every processor's unheld points, with the processor and cell that
-    // held each at the last step (a start for the walk), to every processor
-    List<pointField> all(nProcs);
-    List<labelList> allOwner(nProcs);
-    List<labelList> allCell(nProcs);
-    all[myProc] = points;
-    allOwner[myProc] = owner;
-    allCell[myProc] = cell;
-    Pstream::gatherList(all);
-    Pstream::scatterList(all);
-    Pstream::gatherList(allOwner);
-    Pstream::scatterList(allOwner);
-    Pstream::gatherList(allCell);
-    Pstream::scatterList(allCell);
-
-    labelList offset(nProcs + 1, Zero);
-    forAll(all, proci)
-    {
-        offset[proci + 1] = offset[proci] + all[proci].size();
-    }
-
-    // The lowest processor holding a point answers for it; only those whose
-    // bounding box holds it look
-    const boundBox& bounds = mesh_.bounds();
-    labelList claim(offset[nProcs], labelMax);
-    labelList found(offset[nProcs], -1);
-    vectorField answer(offset[nProcs], Zero);
-    forAll(all, proci)
-    {
-        forAll(all[proci], k)
-        {
-            const point& p = all[proci][k];
-            if (proci == myProc || !bounds.contains(p))
-            {
-                continue;
-            }
-            const label j = offset[proci] + k;
-            const label start =
-                (allOwner[proci][k] == myProc) ? allCell[proci][k] : -1;
-            found[j] = locateBead(search_, p, start);
-            if (found[j] >= 0)
-            {
-                claim[j] = myProc;
-            }
-        }
-    }
-    Pstream::listCombineGather(claim, minEqOp<label>());
-    Pstream::listCombineScatter(claim);
-
-    forAll(answer, j)
-    {
-        if (claim[j] == myProc)
-        {
-            label proci = 0;
-            while (offset[proci + 1] <= j)
-            {
-                ++proci;
-            }
-            const point& p = all[proci][j - offset[proci]];
-            answer[j] = interpolator.interpolate(p, found[j]);
-        }
-        else
-        {
-            found[j] = -1;
-        }
-    }
-    Pstream::listCombineGather(answer, plusEqOp<vector>());
-    Pstream::listCombineScatter(answer);
-    Pstream::listCombineGather(found, maxEqOp<label>());
-    Pstream::listCombineScatter(found);
-
-    velocity.setSize(points.size());
-    forAll(points, k)
-    {
-        const label j = offset[myProc] + k;
-        velocity[k] = answer[j];
-        owner[k] = (claim[j] == labelMax) ? -1 : claim[j];
-        cell[k] = found[j];
-    }
-}
-
-
 void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
 {
-    const List<vector>& x = chains.positions();
-    nOutside_ = 0;
-    if (x.empty() && !Pstream::parRun())
+    if (chains.positions().empty() && !Pstream::parRun())
     {
         // No interpolation to set up (cellPoint interpolates U to the
         // points): a scene without chains pays nothing
@@ -252,70 +148,14 @@ void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
     }
 
     const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
-
     autoPtr<interpolation<vector>> interpolator
     (
         interpolation<vector>::New(interpolationScheme_, U)
     );
 
-    labelList& hostCell = hostCells_.update(chains);
-    labelList& remoteOwner = remoteOwners_.update(chains);
-    labelList& remoteCell = remoteCells_.update(chains);
-    beadVelocity_.setSize(x.size());
-
-    DynamicList<label>& unheld = unheldBead_;
-    DynamicList<point>& unheldPoints = unheldPoint_;
-    unheld.clear();
-    unheldPoints.clear();
-
-    // A bead outside this processor's bounding box is in another's mesh,
-    // or in none: no search here
-    const boundBox& bounds = mesh_.bounds();
-    forAll(x, i)
-    {
-        const point p = periodic_.wrap(x[i]);
-        hostCell[i] =
-            bounds.contains(p) ? locateBead(search_, p, hostCell[i]) : -1;
-
-        if (hostCell[i] < 0)
-        {
-            beadVelocity_[i] = Zero;
-            unheld.append(i);
-            unheldPoints.append(p);
-        }
-        else
-        {
-            beadVelocity_[i] = interpolator->interpolate(p, hostCell[i]);
-        }
-    }
-
-    // Beads in other processors' meshes take their velocity there
-    if (Pstream::parRun())
-    {
-        clockTime clock;
-        labelList owner(unheld.size());
-        labelList cell(unheld.size());
-        forAll(unheld, k)
-        {
-            owner[k] = remoteOwner[unheld[k]];
-            cell[k] = remoteCell[unheld[k]];
-        }
-        vectorField velocity;
-        remoteVelocities(interpolator(), unheldPoints, owner, cell, velocity);
-        exchangeSeconds_ += clock.elapsedTime();
-
-        remoteOwner = -1;
-        forAll(unheld, k)
-        {
-            beadVelocity_[unheld[k]] = velocity[k];
-            remoteOwner[unheld[k]] = owner[k];
-            remoteCell[unheld[k]] = cell[k];
-        }
-    }
-    forAll(unheld, k)
-    {
-        nOutside_ += (remoteOwner[unheld[k]] < 0);
-    }
+    sampler_.locate(chains);
+    beadVelocity_.setSize(chains.nBeads());
+    sampler_.sample(chains, interpolator(), beadVelocity_);
 
     // The corrector's flow: the mean of the step's start and the predicted
     // end (beads injected since have no start value)
@@ -354,10 +194,9 @@ void Foam::flowModels::fieldFlow::depositMomentum
 
     // Beads in other processors' meshes: their momentum goes there
     const label nProcs = Pstream::nProcs();
-    List<DynamicList<point>> remotePoint(nProcs);
+    List<DynamicList<label>> remoteCell(nProcs);
     List<DynamicList<vector>> remoteTransfer(nProcs);
     List<DynamicList<scalar>> remoteCoeff(nProcs);
-    label nextUnheld = 0;
 
     for (label c = 0; c < chains.nChains(); ++c)
     {
@@ -376,18 +215,13 @@ void Foam::flowModels::fieldFlow::depositMomentum
                 transfer += force[i]*deltaT;
             }
 
-            const label celli = hostCells_.cells()[i];
+            const label celli = sampler_.hostCells()[i];
             if (celli < 0)
             {
-                // The unheld beads are listed in bead order
-                while (unheldBead_[nextUnheld] != i)
-                {
-                    ++nextUnheld;
-                }
-                const label proci = remoteOwners_.cells()[i];
+                const label proci = sampler_.remoteOwners()[i];
                 if (proci >= 0)
                 {
-                    remotePoint[proci].append(unheldPoint_[nextUnheld]);
+                    remoteCell[proci].append(sampler_.remoteCells()[i]);
                     remoteTransfer[proci].append(transfer);
                     remoteCoeff[proci].append(coeff);
                 }
@@ -406,26 +240,26 @@ void Foam::flowModels::fieldFlow::depositMomentum
     if (Pstream::parRun())
     {
         clockTime clock;
-        depositRemote(remotePoint, remoteTransfer, remoteCoeff);
-        exchangeSeconds_ += clock.elapsedTime();
+        depositRemote(remoteCell, remoteTransfer, remoteCoeff);
+        depositSeconds_ += clock.elapsedTime();
     }
 }
 
 
 void Foam::flowModels::fieldFlow::depositRemote
 (
-    const List<DynamicList<point>>& points,
+    const List<DynamicList<label>>& cells,
     const List<DynamicList<vector>>& transfer,
     const List<DynamicList<scalar>>& coeff
 )
 {
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    forAll(points, proci)
+    forAll(cells, proci)
     {
-        if (points[proci].size())
+        if (cells[proci].size())
         {
             UOPstream os(proci, buffers);
-            os  << points[proci] << transfer[proci] << coeff[proci];
+            os  << cells[proci] << transfer[proci] << coeff[proci];
         }
     }
     labelList recvSizes;
@@ -439,17 +273,13 @@ void Foam::flowModels::fieldFlow::depositRemote
             continue;
         }
         UIPstream is(proci, buffers);
-        const List<point> p(is);
+        const labelList cell(is);
         const List<vector> t(is);
         const List<scalar> c(is);
-        forAll(p, k)
+        forAll(cell, k)
         {
-            const label celli = search_.findCell(p[k]);
-            if (celli >= 0)
-            {
-                momentumTransfer_[celli] += (t[k] + c[k]*U[celli])/rho_;
-                momentumCoeff_[celli] += c[k]/rho_;
-            }
+            momentumTransfer_[cell[k]] += (t[k] + c[k]*U[cell[k]])/rho_;
+            momentumCoeff_[cell[k]] += c[k]/rho_;
         }
     }
 }

@@ -11,7 +11,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "electrophoretic.H"
-#include "locateBead.H"
 #include "fvm.H"
 #include "fvc.H"
 #include "addToRunTimeSelectionTable.H"
@@ -64,9 +63,8 @@ Foam::forceModels::electrophoretic::electrophoretic
         dimensionedVector(potential_.dimensions()/dimLength, Zero)
     ),
     interpolateField_(),
-    search_(mesh),
-    periodic_(periodicImages::New(mesh)),
-    hostCells_()
+    sampler_(mesh),
+    beadField_()
 {
     Info<< "electrophoretic: solving laplacian(" << potential_.name()
         << ") = 0 for the electric field" << endl;
@@ -91,19 +89,12 @@ void Foam::forceModels::electrophoretic::addForce
     UList<vector>& force
 ) const
 {
-    const List<vector>& x = chains.positions();
-
-    labelList& hostCell = hostCells_.update(chains);
-
-    forAll(x, i)
+    sampler_.locate(chains);
+    beadField_.setSize(chains.nBeads());
+    sampler_.sample(chains, interpolateField_(), beadField_);
+    forAll(beadField_, i)
     {
-        const point p = periodic_.wrap(x[i]);
-        hostCell[i] = locateBead(search_, p, hostCell[i]);
-        if (hostCell[i] >= 0)
-        {
-            force[i] +=
-                charge_*interpolateField_->interpolate(p, hostCell[i]);
-        }
+        force[i] += charge_*beadField_[i];
     }
 }
 
