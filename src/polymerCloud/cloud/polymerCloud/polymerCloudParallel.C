@@ -71,11 +71,39 @@ void receiveChains(Foam::Istream& is, Foam::polymerChains& chains)
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::polymerCloud::checkParallelSupport(const dictionary& subModels)
-const
 {
     if (!Pstream::parRun())
     {
         return;
+    }
+
+    if (wall_->active() && !wall_->runsInParallel())
+    {
+        FatalIOErrorInFunction(subModels)
+            << "wall " << wall_->type() << " in " << subModels.name()
+            << " runs serially in this version: its distance field is not"
+            << " exchanged between processors" << nl
+            << "    expected: a serial run, or in parallel wall meshFaces"
+            << " (or none)"
+            << exit(FatalIOError);
+    }
+
+    // A bead of a chain is at most a contour length from the chain's
+    // reference bead, which is in its owner's mesh at the step's start,
+    // and moves less than a rod length in a step: the walls of other
+    // processors within that reach
+    if (wall_->active())
+    {
+        scalar reach = 0;
+        for (const chainType& type : types_)
+        {
+            reach = max(reach, type.nBeads()*type.rodLength());
+        }
+        wall_->setReach(reach);
+        Info<< name() << ": wall " << wall_->type() << " sees "
+            << returnReduce(wall_->faces().nHaloFaces(), sumOp<label>())
+            << " boundary faces of other processors (within "
+            << reach << " of each processor's mesh)" << endl;
     }
 
     if (collision_->type() != "none")

@@ -99,7 +99,7 @@ bool Foam::wallModels::levelSet::predict
     scalar distanceBefore = distanceAt(x, cell);
     if (distanceBefore < 0)
     {
-        return faceImpact(search_, x, v, T, hit);
+        return faceImpact(x, v, T, hit);
     }
 
     for (label k = 1; k <= nSamples_; ++k)

@@ -33,8 +33,7 @@ Foam::wallModels::meshFaces::meshFaces
     const fvMesh& mesh
 )
 :
-    wallModel(typeName, dict, mesh),
-    search_(mesh)
+    wallModel(typeName, dict, mesh)
 {}
 
 
@@ -48,7 +47,7 @@ bool Foam::wallModels::meshFaces::predict
     impact& hit
 ) const
 {
-    return faceImpact(search_, x, v, T, hit);
+    return faceImpact(x, v, T, hit);
 }
 
 

@@ -12,8 +12,6 @@ License
 
 #include "wallModel.H"
 #include "wallPolyPatch.H"
-#include "emptyPolyPatch.H"
-#include "processorPolyPatch.H"
 #include "cyclicPolyPatch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -49,7 +47,8 @@ Foam::wallModel::wallModel
     interaction_(mesh.boundaryMesh().size(), interactionType::escape),
     escapedBeads_(),
     rejectedBeads_(),
-    counters_()
+    counters_(),
+    faces_()
 {
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
 
@@ -95,9 +94,25 @@ Foam::wallModel::wallModel
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
+const Foam::boundaryFaces& Foam::wallModel::faces() const
+{
+    if (!faces_.valid())
+    {
+        if (Pstream::parRun())
+        {
+            FatalErrorInFunction
+                << "The wall model's boundary faces are made collectively:"
+                << " call setReach first in a parallel run"
+                << exit(FatalError);
+        }
+        faces_.reset(new boundaryFaces(mesh_, 0));
+    }
+    return faces_();
+}
+
+
 bool Foam::wallModel::faceImpact
 (
-    const meshSearch& search,
     const point& x,
     const vector& v,
     const scalar T,
@@ -118,48 +133,29 @@ bool Foam::wallModel::faceImpact
             return false;
         }
 
-        bool crossed = false;
-
-        // All boundary faces the segment meets, nearest first
-        for (const pointIndexHit& h : search.intersections(start, start + path))
+        // The first boundary face the segment enters from the fluid side
+        const pointIndexHit h = faces().firstEntered(start, start + path);
+        if (!h.hit())
         {
-            const label facei = h.index();
-            const label patchi = mesh_.boundaryMesh().whichPatch(facei);
-            const polyPatch& patch = mesh_.boundaryMesh()[patchi];
-            if (isA<emptyPolyPatch>(patch) || isA<processorPolyPatch>(patch))
-            {
-                continue;
-            }
+            return false;
+        }
 
-            const vector area = mesh_.faceAreas()[facei];
-            const vector normal = -area/mag(area);
+        const label facei = h.index();
+        const label patchi = faces().patch(facei);
+        const vector area = faces().area(facei);
+        const scalar fraction = ((h.hitPoint() - start) & path)/sqr(length);
 
-            // Only a path that enters the face from the fluid side meets it
-            if ((v & normal) >= 0)
-            {
-                continue;
-            }
-
-            const scalar fraction = ((h.hitPoint() - start) & path)/sqr(length);
-
-            if (isA<cyclicPolyPatch>(patch))
-            {
-                start = h.hitPoint() + periodic_.translation(patchi);
-                elapsed += (T - elapsed)*fraction;
-                crossed = true;
-                break;
-            }
-
+        if (!isA<cyclicPolyPatch>(mesh_.boundaryMesh()[patchi]))
+        {
             hit.time = elapsed + (T - elapsed)*max(fraction*(1 - 1e-9), 0.0);
-            hit.normal = normal;
+            hit.normal = -area/mag(area);
             hit.patch = patchi;
             return true;
         }
 
-        if (!crossed)
-        {
-            return false;
-        }
+        // A cyclic face: the path goes on from the neighbour patch
+        start = h.hitPoint() + periodic_.translation(patchi);
+        elapsed += (T - elapsed)*fraction;
     }
 
     return false;
@@ -167,6 +163,12 @@ bool Foam::wallModel::faceImpact
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::wallModel::setReach(const scalar reach)
+{
+    faces_.reset(new boundaryFaces(mesh_, reach));
+}
+
 
 void Foam::wallModel::interact
 (

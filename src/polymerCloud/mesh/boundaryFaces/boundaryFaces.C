@@ -1,0 +1,320 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "boundaryFaces.H"
+#include "emptyPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
+#include "periodicImages.H"
+#include "PstreamBuffers.H"
+#include "Random.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+typedef Foam::treeDataPrimitivePatch<Foam::primitiveFacePatch> treeFaces;
+
+// The intersection of a segment with a face it enters along the face's
+// outward area vector (from the fluid side); faces it leaves are passed
+class enteringFaceOp
+{
+    const Foam::indexedOctree<treeFaces>& tree_;
+    const Foam::vectorField& areas_;
+
+public:
+
+    enteringFaceOp
+    (
+        const Foam::indexedOctree<treeFaces>& tree,
+        const Foam::vectorField& areas
+    )
+    :
+        tree_(tree),
+        areas_(areas)
+    {}
+
+    bool operator()
+    (
+        const Foam::label index,
+        const Foam::point& start,
+        const Foam::point& end,
+        Foam::point& hitPoint
+    ) const
+    {
+        return
+            ((end - start) & areas_[index]) > 0
+         && treeFaces::findIntersection(tree_, index, start, end, hitPoint);
+    }
+};
+
+
+// Append a face, with points of its own, to lists
+void appendFace
+(
+    const Foam::UList<Foam::point>& facePoints,
+    const Foam::vector& area,
+    const Foam::label patchi,
+    Foam::DynamicList<Foam::point>& points,
+    Foam::DynamicList<Foam::face>& faces,
+    Foam::DynamicList<Foam::vector>& areas,
+    Foam::DynamicList<Foam::label>& patches
+)
+{
+    using namespace Foam;
+
+    face f(facePoints.size());
+    forAll(facePoints, k)
+    {
+        f[k] = points.size();
+        points.append(facePoints[k]);
+    }
+    faces.append(f);
+    areas.append(area);
+    patches.append(patchi);
+}
+
+
+// The translations that take a box to its images across cyclic patches:
+// every combination of -1, 0 or +1 times each independent translation
+Foam::List<Foam::vector> imageShifts(const Foam::List<Foam::vector>& lattice)
+{
+    using namespace Foam;
+
+    DynamicList<vector> shifts(1, Zero);
+    for (const vector& t : lattice)
+    {
+        const label n = shifts.size();
+        for (label k = 0; k < n; ++k)
+        {
+            shifts.append(shifts[k] + t);
+            shifts.append(shifts[k] - t);
+        }
+    }
+    return List<vector>(shifts);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::boundaryFaces::addOwnFaces(const polyMesh& mesh)
+{
+    DynamicList<point> points;
+    DynamicList<face> faces;
+    DynamicList<vector> areas;
+    DynamicList<label> patches;
+
+    const polyBoundaryMesh& boundary = mesh.boundaryMesh();
+    forAll(boundary, patchi)
+    {
+        const polyPatch& pp = boundary[patchi];
+        label kind = patchi;
+        if (isA<processorCyclicPolyPatch>(pp))
+        {
+            kind = refCast<const processorCyclicPolyPatch>(pp).referPatchID();
+        }
+        else if (isA<emptyPolyPatch>(pp) || isA<processorPolyPatch>(pp))
+        {
+            continue;
+        }
+
+        forAll(pp, k)
+        {
+            const label facei = pp.start() + k;
+            appendFace
+            (
+                UIndirectList<point>(mesh.points(), mesh.faces()[facei])(),
+                mesh.faceAreas()[facei],
+                kind,
+                points, faces, areas, patches
+            );
+        }
+    }
+
+    points_.transfer(points);
+    faces_.transfer(faces);
+    areas_.transfer(areas);
+    patch_.transfer(patches);
+    nOwnFaces_ = faces_.size();
+}
+
+
+void Foam::boundaryFaces::addHalo(const polyMesh& mesh, const scalar reach)
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    // Every processor's mesh bounds grown by the reach
+    List<boundBox> reachBox(Pstream::nProcs());
+    const boundBox& bounds = mesh.bounds();
+    reachBox[Pstream::myProcNo()] = boundBox
+    (
+        bounds.min() - vector::uniform(reach),
+        bounds.max() + vector::uniform(reach)
+    );
+    Pstream::gatherList(reachBox);
+    Pstream::scatterList(reachBox);
+
+    const List<vector> shifts
+    (
+        imageShifts(periodicImages::New(mesh).lattice())
+    );
+
+    // Own faces within each other processor's reach, at any image
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(reachBox, proci)
+    {
+        if (proci == Pstream::myProcNo())
+        {
+            continue;
+        }
+
+        DynamicList<label> sizes;
+        DynamicList<point> points;
+        DynamicList<vector> areas;
+        DynamicList<label> patches;
+        for (label facei = 0; facei < nOwnFaces_; ++facei)
+        {
+            const face& f = faces_[facei];
+            const SubList<point> facePoints(points_, f.size(), f[0]);
+            const boundBox faceBox(facePoints, false);
+            for (const vector& shift : shifts)
+            {
+                const boundBox image
+                (
+                    reachBox[proci].min() + shift,
+                    reachBox[proci].max() + shift
+                );
+                if (image.overlaps(faceBox))
+                {
+                    sizes.append(f.size());
+                    points.append(facePoints);
+                    areas.append(areas_[facei]);
+                    patches.append(patch_[facei]);
+                    break;
+                }
+            }
+        }
+        if (sizes.size())
+        {
+            UOPstream os(proci, buffers);
+            os  << sizes << points << areas << patches;
+        }
+    }
+    labelList recvSizes;
+    buffers.finishedSends(recvSizes);
+
+    DynamicList<point> points(points_);
+    DynamicList<face> faces(faces_);
+    DynamicList<vector> areas(areas_);
+    DynamicList<label> patches(patch_);
+    forAll(recvSizes, proci)
+    {
+        if (!recvSizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, buffers);
+        const labelList sizes(is);
+        const pointField facePoints(is);
+        const vectorField faceAreas(is);
+        const labelList facePatches(is);
+        label first = 0;
+        forAll(sizes, k)
+        {
+            appendFace
+            (
+                SubList<point>(facePoints, sizes[k], first),
+                faceAreas[k],
+                facePatches[k],
+                points, faces, areas, patches
+            );
+            first += sizes[k];
+        }
+    }
+
+    points_.transfer(points);
+    faces_.transfer(faces);
+    areas_.transfer(areas);
+    patch_.transfer(patches);
+}
+
+
+void Foam::boundaryFaces::buildTree()
+{
+    if (faces_.empty())
+    {
+        return;
+    }
+
+    facePatch_.reset(new primitiveFacePatch(faces_, points_));
+
+    // As meshSearch's boundary tree: a box a little larger than the faces,
+    // not aligned with them
+    Random random(123456);
+    treeBoundBox bb(treeBoundBox(points_).extend(random, 1e-4));
+    bb.min() -= point::uniform(ROOTVSMALL);
+    bb.max() += point::uniform(ROOTVSMALL);
+
+    tree_.reset
+    (
+        new indexedOctree<treeFaces>
+        (
+            treeFaces(false, facePatch_(), 0),
+            bb,
+            8,      // maximum depth
+            10,     // faces per leaf to refine
+            3.0     // duplicity
+        )
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::boundaryFaces::boundaryFaces(const polyMesh& mesh, const scalar reach)
+:
+    points_(),
+    faces_(),
+    areas_(),
+    patch_(),
+    nOwnFaces_(0),
+    facePatch_(),
+    tree_()
+{
+    addOwnFaces(mesh);
+    addHalo(mesh, reach);
+    buildTree();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::pointIndexHit Foam::boundaryFaces::firstEntered
+(
+    const point& start,
+    const point& end
+) const
+{
+    if (!tree_.valid())
+    {
+        return pointIndexHit();
+    }
+    return tree_->findLine(start, end, enteringFaceOp(tree_(), areas_));
+}
+
+
+// ************************************************************************* //
