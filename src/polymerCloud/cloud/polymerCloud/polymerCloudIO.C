@@ -11,9 +11,18 @@ License
 Description
     Reading and writing the chains in the time directories:
     lagrangian/<cloud>/positions (OpenFOAM's v1706 positions format, which
-    ParaView's OpenFOAM reader shows as points), U, chainId, bead and
-    chainType (index into chainTypes). Positions and velocities are written
-    with 17 significant digits so that a restart continues bit for bit.
+    ParaView's OpenFOAM reader shows as points), position (the same as a
+    field), U, chainId, bead and chainType (index into chainTypes).
+    Positions and velocities are written with 17 significant digits so
+    that a restart continues bit for bit.
+
+    In a parallel run each processor writes its own chains whole, beads
+    in its neighbours' sub-domains included. reconstructPar joins the
+    processors' fields (position, U, chainId, bead, chainType) into the
+    case's time directory, from which a serial run restarts; it makes no
+    positions file there (OpenFOAM's particles must lie in their
+    processor's mesh, a chain's beads need not), so the position field is
+    read first.
 
 \*---------------------------------------------------------------------------*/
 
@@ -45,7 +54,9 @@ Foam::IOobject Foam::polymerCloud::fieldIOobject
 
 bool Foam::polymerCloud::savedCloudExists() const
 {
-    return isFile(fieldIOobject("positions", IOobject::NO_READ).objectPath());
+    return
+        isFile(fieldIOobject("position", IOobject::NO_READ).objectPath())
+     || isFile(fieldIOobject("positions", IOobject::NO_READ).objectPath());
 }
 
 
@@ -78,9 +89,15 @@ Foam::List<Foam::point> Foam::polymerCloud::readPositions(const IOobject& io)
 
 void Foam::polymerCloud::readChains()
 {
+    // The position field where there is one (reconstructPar writes no
+    // positions file for the beads, which need not be in a processor's
+    // mesh, but joins the processors' position fields)
+    const IOobject positionIO(fieldIOobject("position", IOobject::MUST_READ));
     const List<point> positions
     (
-        readPositions(fieldIOobject("positions", IOobject::MUST_READ))
+        isFile(positionIO.objectPath())
+      ? List<point>(IOField<point>(positionIO))
+      : readPositions(fieldIOobject("positions", IOobject::MUST_READ))
     );
     const IOField<vector> U(fieldIOobject("U", IOobject::MUST_READ));
     const IOField<label> chainId
@@ -188,6 +205,11 @@ bool Foam::polymerCloud::writeObject
     writePositions();
 
     const label n = chains_.nBeads();
+    IOField<point> position
+    (
+        fieldIOobject("position", IOobject::NO_READ),
+        chains_.positions()
+    );
     IOField<vector> U
     (
         fieldIOobject("U", IOobject::NO_READ),
@@ -212,7 +234,8 @@ bool Foam::polymerCloud::writeObject
     }
 
     const bool ok =
-        U.writeObject(fmt, ver, cmp, true)
+        position.writeObject(fmt, ver, cmp, true)
+     && U.writeObject(fmt, ver, cmp, true)
      && chainId.writeObject(fmt, ver, cmp, true)
      && bead.writeObject(fmt, ver, cmp, true)
      && typeIndex.writeObject(fmt, ver, cmp, true);
