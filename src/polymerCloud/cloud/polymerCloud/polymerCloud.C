@@ -587,6 +587,9 @@ Foam::polymerCloud::polymerCloud
     periodicCrossings_(0),
     migrations_(0),
     migrationSeconds_(0),
+    groupedChains_(0),
+    collisionBoxes_(),
+    chainsOutgrowingBox_(0),
     evolveSeconds_(0),
     beadSteps_(0),
     maxBeadsOutside_(0),
@@ -766,8 +769,11 @@ void Foam::polymerCloud::evolve()
         );
     }
 
-    // 3. Rod-rod collisions and bead-wall impacts
+    // 3. Rod-rod collisions and bead-wall impacts, chains of different
+    // processors that can meet in one loop
+    groupCollidingChains();
     collision_->correct(chains_, positionsOld_, deltaT, time, wall_.get());
+    checkCollisionBoxes();
     intervalCollisions_.add(collision_->count());
     totalCollisions_.add(collision_->count());
     collision_->resetCounters();
@@ -915,6 +921,13 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         << returnReduce(migrations_, sumOp<label>()) << nl;
     if (Pstream::parRun())
     {
+        if (collision_->type() != "none")
+        {
+            os  << "    chains grouped with other processors' for their"
+                << " collisions " << returnReduce(groupedChains_, sumOp<label>())
+                << ", chains that left their swept box "
+                << returnReduce(chainsOutgrowingBox_, sumOp<label>()) << nl;
+        }
         os  << "    parallel exchanges (wall clock, slowest processor):"
             << " moving chains "
             << returnReduce(migrationSeconds_, maxOp<scalar>())

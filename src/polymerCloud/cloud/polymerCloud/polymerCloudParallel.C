@@ -20,6 +20,7 @@ Description
 #include "pointField.H"
 #include "clockTime.H"
 #include "pointOwners.H"
+#include "bitSet.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -65,6 +66,52 @@ void receiveChains(Foam::Istream& is, Foam::polymerChains& chains)
     }
 }
 
+
+// The beads of the listed chains, in order
+Foam::List<Foam::vector> chainBeads
+(
+    const Foam::polymerChains& chains,
+    const Foam::labelUList& chainIndices,
+    const Foam::UList<Foam::vector>& field
+)
+{
+    using namespace Foam;
+
+    DynamicList<vector> beads;
+    for (const label c : chainIndices)
+    {
+        beads.append(SubList<vector>(field, chains.size(c), chains.start(c)));
+    }
+    return List<vector>(beads);
+}
+
+
+// Remove the beads of the listed chains from a field, as
+// polymerChains::remove does from the chains
+void removeBeads
+(
+    const Foam::polymerChains& chains,
+    const Foam::labelUList& chainIndices,
+    Foam::DynamicList<Foam::vector>& field
+)
+{
+    using namespace Foam;
+
+    const bitSet removed(chains.nChains(), chainIndices);
+    label nKept = 0;
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        if (!removed.test(c))
+        {
+            for (label i = chains.start(c); i < chains.end(c); ++i)
+            {
+                field[nKept++] = field[i];
+            }
+        }
+    }
+    field.resize(nKept);
+}
+
 } // End anonymous namespace
 
 
@@ -91,7 +138,8 @@ void Foam::polymerCloud::checkParallelSupport(const dictionary& subModels)
     // A bead of a chain is at most a contour length from the chain's
     // reference bead, which is in its owner's mesh at the step's start,
     // and moves less than a rod length in a step: the walls of other
-    // processors within that reach
+    // processors within that reach; twice that with collisions, whose
+    // groups bring a neighbour's chains into a processor's loop
     if (wall_->active())
     {
         scalar reach = 0;
@@ -99,20 +147,15 @@ void Foam::polymerCloud::checkParallelSupport(const dictionary& subModels)
         {
             reach = max(reach, type.nBeads()*type.rodLength());
         }
+        if (collision_->type() != "none")
+        {
+            reach *= 2;
+        }
         wall_->setReach(reach);
         Info<< name() << ": wall " << wall_->type() << " sees "
             << returnReduce(wall_->faces().nHaloFaces(), sumOp<label>())
             << " boundary faces of other processors (within "
             << reach << " of each processor's mesh)" << endl;
-    }
-
-    if (collision_->type() != "none")
-    {
-        WarningInFunction
-            << "collision " << collision_->type() << " in parallel: the"
-            << " rods of one chain meet each other, but chains owned by"
-            << " different processors do not collide (no ghost rods yet)"
-            << endl;
     }
 }
 
@@ -164,6 +207,21 @@ void Foam::polymerCloud::distributeChains()
         }
     }
 
+    moveChains(toProc, sent);
+    migrations_ += sent.size();
+    migrationSeconds_ += clock.elapsedTime();
+}
+
+
+void Foam::polymerCloud::moveChains
+(
+    const List<DynamicList<label>>& toProc,
+    const labelUList& sent
+)
+{
+    // The step's start goes along while it is in use (the collision step)
+    const bool withStart = (positionsOld_.size() == chains_.nBeads());
+
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     forAll(toProc, proci)
     {
@@ -171,13 +229,22 @@ void Foam::polymerCloud::distributeChains()
         {
             UOPstream os(proci, buffers);
             sendChains(os, chains_, toProc[proci]);
+            if (withStart)
+            {
+                os  << chainBeads(chains_, toProc[proci], positionsOld_)
+                    << chainBeads(chains_, toProc[proci], velocitiesOld_);
+            }
         }
     }
     labelList recvSizes;
     buffers.finishedSends(recvSizes);
 
+    if (withStart)
+    {
+        removeBeads(chains_, sent, positionsOld_);
+        removeBeads(chains_, sent, velocitiesOld_);
+    }
     chains_.remove(sent);
-    migrations_ += sent.size();
 
     forAll(recvSizes, proci)
     {
@@ -185,9 +252,15 @@ void Foam::polymerCloud::distributeChains()
         {
             UIPstream is(proci, buffers);
             receiveChains(is, chains_);
+            if (withStart)
+            {
+                const List<vector> x0(is);
+                const List<vector> v0(is);
+                positionsOld_.append(x0);
+                velocitiesOld_.append(v0);
+            }
         }
     }
-    migrationSeconds_ += clock.elapsedTime();
 }
 
 

@@ -84,25 +84,6 @@ void appendFace
 }
 
 
-// The translations that take a box to its images across cyclic patches:
-// every combination of -1, 0 or +1 times each independent translation
-Foam::List<Foam::vector> imageShifts(const Foam::List<Foam::vector>& lattice)
-{
-    using namespace Foam;
-
-    DynamicList<vector> shifts(1, Zero);
-    for (const vector& t : lattice)
-    {
-        const label n = shifts.size();
-        for (label k = 0; k < n; ++k)
-        {
-            shifts.append(shifts[k] + t);
-            shifts.append(shifts[k] - t);
-        }
-    }
-    return List<vector>(shifts);
-}
-
 } // End anonymous namespace
 
 
@@ -168,10 +149,7 @@ void Foam::boundaryFaces::addHalo(const polyMesh& mesh, const scalar reach)
     Pstream::gatherList(reachBox);
     Pstream::scatterList(reachBox);
 
-    const List<vector> shifts
-    (
-        imageShifts(periodicImages::New(mesh).lattice())
-    );
+    const periodicImages& periodic = periodicImages::New(mesh);
 
     // Own faces within each other processor's reach, at any image
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
@@ -191,21 +169,12 @@ void Foam::boundaryFaces::addHalo(const polyMesh& mesh, const scalar reach)
             const face& f = faces_[facei];
             const SubList<point> facePoints(points_, f.size(), f[0]);
             const boundBox faceBox(facePoints, false);
-            for (const vector& shift : shifts)
+            if (periodic.overlapsImage(reachBox[proci], faceBox))
             {
-                const boundBox image
-                (
-                    reachBox[proci].min() + shift,
-                    reachBox[proci].max() + shift
-                );
-                if (image.overlaps(faceBox))
-                {
-                    sizes.append(f.size());
-                    points.append(facePoints);
-                    areas.append(areas_[facei]);
-                    patches.append(patch_[facei]);
-                    break;
-                }
+                sizes.append(f.size());
+                points.append(facePoints);
+                areas.append(areas_[facei]);
+                patches.append(patch_[facei]);
             }
         }
         if (sizes.size())

@@ -144,7 +144,8 @@ Foam::periodicImages::periodicImages(const polyMesh& mesh)
     translation_(),
     patch_(),
     patchTranslation_(mesh.boundaryMesh().size(), Zero),
-    lattice_()
+    lattice_(),
+    imageShifts_()
 {
     forAll(mesh.boundaryMesh(), patchi)
     {
@@ -153,6 +154,18 @@ Foam::periodicImages::periodicImages(const polyMesh& mesh)
             addPatch(patchi);
         }
     }
+
+    DynamicList<vector> shifts(1, Zero);
+    for (const vector& t : lattice_)
+    {
+        const label n = shifts.size();
+        for (label k = 0; k < n; ++k)
+        {
+            shifts.append(shifts[k] + t);
+            shifts.append(shifts[k] - t);
+        }
+    }
+    imageShifts_.transfer(shifts);
 
     if (active())
     {
@@ -186,6 +199,31 @@ Foam::vector Foam::periodicImages::shift(const point& p) const
         }
     }
     return total;
+}
+
+
+bool Foam::periodicImages::overlapsImage
+(
+    const boundBox& a,
+    const boundBox& b
+) const
+{
+    if (a.overlaps(b))
+    {
+        return true;
+    }
+    if (!active())
+    {
+        return false;
+    }
+    for (const vector& shift : imageShifts_)
+    {
+        if (boundBox(a.min() + shift, a.max() + shift).overlaps(b))
+        {
+            return true;
+        }
+    }
+    return false;
 }
 
 

@@ -99,6 +99,7 @@ void Foam::collisionModels::elasticRods::buildRods
 {
     rods_.clear();
     rodChain_.clear();
+    rodChainId_.clear();
     beadRods_.resize(chains.nBeads());
     beadRods_ = FixedList<label, 2>({-1, -1});
 
@@ -115,6 +116,7 @@ void Foam::collisionModels::elasticRods::buildRods
 
             rods_.append(labelPair(a, b));
             rodChain_.append(c);
+            rodChainId_.append(chains.globalId(c));
             beadRods_[a][1] = rod;
             beadRods_[b][0] = rod;
         }
@@ -190,7 +192,11 @@ void Foam::collisionModels::elasticRods::addPair
     const label nRods = rods_.size();
     label rodA = entryA % nRods, rodB = entryB % nRods;
     label imageA = entryA/nRods, imageB = entryB/nRods;
-    if (rodA > rodB)
+    if
+    (
+        rodChainId_[rodA] > rodChainId_[rodB]
+     || (rodChainId_[rodA] == rodChainId_[rodB] && rodA > rodB)
+    )
     {
         std::swap(rodA, rodB);
         std::swap(imageA, imageB);
