@@ -11,6 +11,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "polymerCloud.H"
+#include "OStringStream.H"
+#include "Tuple2.H"
 #include "initialisationModel.H"
 #include "newton.H"
 #include "chainNoise.H"
@@ -265,7 +267,7 @@ void Foam::polymerCloud::accumulateCounters()
 void Foam::polymerCloud::removeEscapedChains()
 {
     const DynamicList<label>& beads = wall_->escapedBeads();
-    if (beads.empty())
+    if (returnReduce(beads.empty(), andOp<bool>()))
     {
         return;
     }
@@ -280,14 +282,34 @@ void Foam::polymerCloud::removeEscapedChains()
         }
     }
 
+    // One log line per chain, from every processor, in chain id order
     label nBeads = 0;
-    for (const label c : leaving)
+    List<List<Tuple2<label, string>>> departures(Pstream::nProcs());
+    List<Tuple2<label, string>>& mine = departures[Pstream::myProcNo()];
+    mine.setSize(leaving.size());
+    forAll(leaving, k)
     {
+        const label c = leaving[k];
         nBeads += chains_.size(c);
-        Info<< name() << ": chain " << chains_.globalId(c) << " ("
+        OStringStream os;
+        os  << name() << ": chain " << chains_.globalId(c) << " ("
             << chains_.type(c).name() << ", " << chains_.size(c)
-            << " beads) left the domain at time "
-            << mesh_.time().value() << endl;
+            << " beads) left the domain at time " << mesh_.time().value();
+        mine[k] = Tuple2<label, string>(chains_.globalId(c), os.str());
+    }
+    Pstream::gatherList(departures);
+    if (Pstream::master())
+    {
+        List<Tuple2<label, string>> all;
+        for (const auto& list : departures)
+        {
+            all.append(list);
+        }
+        Foam::sort(all);
+        for (const Tuple2<label, string>& departure : all)
+        {
+            Info<< departure.second().c_str() << endl;
+        }
     }
 
     wall_->countEscaped(leaving.size(), nBeads);
@@ -709,12 +731,11 @@ void Foam::polymerCloud::evolve()
 
     // New chains fed in, with thermal velocities
     const label nChainsBefore = chains_.nChains();
-    const label nNew =
-        injection_->inject(chains_, seed_, nextChainId_, time);
-    if (nNew)
+    if (injection_->inject(chains_, seed_, nextChainId_, time))
     {
+        keepOwnChains(nChainsBefore);
         setThermalVelocities(nChainsBefore);
-        nInjected_ += nNew;
+        nInjected_ += chains_.nChains() - nChainsBefore;
     }
 
     positionsOld_ = chains_.positions();

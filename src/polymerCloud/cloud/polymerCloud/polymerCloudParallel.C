@@ -264,7 +264,7 @@ void Foam::polymerCloud::moveChains
 }
 
 
-void Foam::polymerCloud::keepOwnChains()
+void Foam::polymerCloud::keepOwnChains(const label firstChain)
 {
     if (!Pstream::parRun())
     {
@@ -272,20 +272,20 @@ void Foam::polymerCloud::keepOwnChains()
     }
 
     const List<vector>& x = chains_.positions();
-    pointField references(chains_.nChains());
-    forAll(references, c)
+    pointField references(chains_.nChains() - firstChain);
+    forAll(references, k)
     {
-        references[c] = periodic_.wrap(x[referenceBead(c)]);
+        references[k] = periodic_.wrap(x[referenceBead(firstChain + k)]);
     }
     const labelList owner(replicatedPointOwners(mesh_, references));
 
     DynamicList<label> others;
-    forAll(owner, c)
+    forAll(owner, k)
     {
-        const label proci = (owner[c] < 0) ? Pstream::masterNo() : owner[c];
+        const label proci = (owner[k] < 0) ? Pstream::masterNo() : owner[k];
         if (proci != Pstream::myProcNo())
         {
-            others.append(c);
+            others.append(firstChain + k);
         }
     }
     chains_.remove(others);

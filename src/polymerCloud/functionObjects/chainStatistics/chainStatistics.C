@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "chainStatistics.H"
+#include "pointOwners.H"
 #include "periodicImages.H"
 #include "polymerCloud.H"
 #include "checkedInput.H"
@@ -94,22 +95,30 @@ Foam::label Foam::cloudFunctions::chainStatistics::rodsOutside() const
     const fvMesh& mesh = cloud_.mesh();
     const periodicImages& periodic = periodicImages::New(mesh);
 
-    label n = 0;
+    // Midpoints this processor's mesh does not hold may be in another's
+    DynamicList<point> unheld;
     for (label c = 0; c < chains.nChains(); ++c)
     {
         const label first = chains.start(c);
         const label size = chains.size(c);
         for (label k = 0; k < chains.type(c).nRods(); ++k)
         {
-            const point middle =
-                0.5*(x[first + k] + x[first + (k + 1) % size]);
-            if (mesh.findCell(periodic.wrap(middle)) < 0)
+            const point middle = periodic.wrap
+            (
+                0.5*(x[first + k] + x[first + (k + 1) % size])
+            );
+            if (!mesh.bounds().contains(middle) || mesh.findCell(middle) < 0)
             {
-                ++n;
+                unheld.append(middle);
             }
         }
     }
-    return n;
+    if (!Pstream::parRun())
+    {
+        return unheld.size();
+    }
+    const labelList owner(pointOwners(mesh, unheld));
+    return std::count(owner.cbegin(), owner.cend(), -1);
 }
 
 

@@ -80,7 +80,9 @@ Foam::label Foam::injectionModels::boxInjection::inject
     const label nNew =
         (time <= start_) ? 0 : dueBy(time) - max(dueBy(time - dt), label(0));
 
-    if (nNew <= 0 || !Pstream::master())
+    // Every processor feeds in the same chains (the cloud keeps each on
+    // the processor holding its reference bead)
+    if (nNew <= 0)
     {
         return 0;
     }
