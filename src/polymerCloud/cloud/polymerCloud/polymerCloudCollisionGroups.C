@@ -304,7 +304,7 @@ void Foam::polymerCloud::groupCollidingChains()
             sent.append(grouped[k]);
         }
     }
-    moveChains(toProc, sent);
+    moveChains(toProc, sent, true);
     groupedChains_ += sent.size();
 
     // The boxes of the chains now here, for the check after the step

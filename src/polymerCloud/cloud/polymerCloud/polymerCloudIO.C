@@ -87,17 +87,29 @@ Foam::List<Foam::point> Foam::polymerCloud::readPositions(const IOobject& io)
 }
 
 
+Foam::List<Foam::point> Foam::polymerCloud::readSavedPositions
+(
+    const IOobject& io
+)
+{
+    // The position field where there is one: reconstructPar writes no
+    // positions file for the beads, which need not be in a processor's
+    // mesh, but joins the processors' position fields
+    IOobject field(io, "position");
+    field.readOpt() = IOobject::MUST_READ;
+    if (isFile(field.objectPath()))
+    {
+        return List<point>(IOField<point>(field));
+    }
+    return readPositions(IOobject(io, "positions"));
+}
+
+
 void Foam::polymerCloud::readChains()
 {
-    // The position field where there is one (reconstructPar writes no
-    // positions file for the beads, which need not be in a processor's
-    // mesh, but joins the processors' position fields)
-    const IOobject positionIO(fieldIOobject("position", IOobject::MUST_READ));
     const List<point> positions
     (
-        isFile(positionIO.objectPath())
-      ? List<point>(IOField<point>(positionIO))
-      : readPositions(fieldIOobject("positions", IOobject::MUST_READ))
+        readSavedPositions(fieldIOobject("positions", IOobject::MUST_READ))
     );
     const IOField<vector> U(fieldIOobject("U", IOobject::MUST_READ));
     const IOField<label> chainId

@@ -207,7 +207,7 @@ void Foam::polymerCloud::distributeChains()
         }
     }
 
-    moveChains(toProc, sent);
+    moveChains(toProc, sent, false);
     migrations_ += sent.size();
     migrationSeconds_ += clock.elapsedTime();
 }
@@ -216,11 +216,17 @@ void Foam::polymerCloud::distributeChains()
 void Foam::polymerCloud::moveChains
 (
     const List<DynamicList<label>>& toProc,
-    const labelUList& sent
+    const labelUList& sent,
+    const bool withStart
 )
 {
-    // The step's start goes along while it is in use (the collision step)
-    const bool withStart = (positionsOld_.size() == chains_.nBeads());
+    if (withStart && positionsOld_.size() != chains_.nBeads())
+    {
+        FatalErrorInFunction
+            << "The step's start has " << positionsOld_.size()
+            << " beads, the chains " << chains_.nBeads()
+            << exit(FatalError);
+    }
 
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     forAll(toProc, proci)

@@ -129,7 +129,7 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
     scalar sumRg2 = 0;
     scalar sumRee2 = 0;
     label nOpen = 0;
-    scalar twiceKinetic = 0;
+    scalar twiceKinetic = twiceKinetic_;
     scalar dof = 0;
     scalar dofKT = 0;
     scalar rodError = 0;
@@ -143,7 +143,6 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
             sumRee2 += chains.endToEndSqr(c);
             ++nOpen;
         }
-        twiceKinetic += 2*peculiarKineticEnergy(c);
         dof += type.degreesOfFreedom();
         dofKT += type.degreesOfFreedom()*type.kT();
         rodError = max(rodError, chains.maxRodLengthError(c));
@@ -215,6 +214,7 @@ Foam::cloudFunctions::chainStatistics::chainStatistics
         )
     ),
     stepsSinceLine_(0),
+    twiceKinetic_(0),
     file_()
 {
     if (Pstream::master())
@@ -223,11 +223,34 @@ Foam::cloudFunctions::chainStatistics::chainStatistics
     }
 
     // The state the run starts from
+    for (label c = 0; c < cloud_.chains().nChains(); ++c)
+    {
+        twiceKinetic_ += 2*peculiarKineticEnergy(c);
+    }
     writeLine();
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cloudFunctions::chainStatistics::postConstrain
+(
+    const scalar deltaT
+)
+{
+    // The solvent's velocities at the beads are those of the chains'
+    // layout now; chains leaving or moving between processors later in
+    // the step change it
+    if (stepsSinceLine_ + 1 >= interval_)
+    {
+        twiceKinetic_ = 0;
+        for (label c = 0; c < cloud_.chains().nChains(); ++c)
+        {
+            twiceKinetic_ += 2*peculiarKineticEnergy(c);
+        }
+    }
+}
+
 
 void Foam::cloudFunctions::chainStatistics::postEvolve()
 {
