@@ -611,6 +611,7 @@ Foam::polymerCloud::polymerCloud
     migrationSeconds_(0),
     groupedChains_(0),
     collisionBoxes_(),
+    processorBounds_(),
     chainsOutgrowingBox_(0),
     evolveSeconds_(0),
     beadSteps_(0),

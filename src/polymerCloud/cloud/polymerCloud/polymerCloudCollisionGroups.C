@@ -13,8 +13,9 @@ Description
     runs). Step (3) resolves the collisions of a step in one event loop,
     earliest first, and a collision changes the later paths of its beads:
     chains that can meet must be in the same loop. Before step (3) each
-    chain's swept box (its beads' x^n and x-dagger, grown by its largest
-    displacement, room for the paths that collisions turn) is compared
+    chain's swept box (its beads' x^n and x-dagger, grown by twice the
+    largest bead displacement of the step, room for the paths that
+    collisions and rebounds turn) is compared
     with the other processors' chains whose boxes reach beyond their own
     sub-domain; the chains that can meet a chain of another processor,
     with every chain that can meet those (the closure), form groups, and
@@ -38,26 +39,25 @@ Description
 namespace
 {
 
-// A chain's swept box over the step, grown by its largest displacement
+// A chain's swept box over the step, grown by a margin
 Foam::boundBox sweptBox
 (
     const Foam::polymerChains& chains,
     const Foam::label c,
-    const Foam::UList<Foam::vector>& positionsOld
+    const Foam::UList<Foam::vector>& positionsOld,
+    const Foam::scalar margin
 )
 {
     using namespace Foam;
 
     const List<vector>& x = chains.positions();
     boundBox bb(boundBox::invertedBox);
-    scalar displacement = 0;
     for (label i = chains.start(c); i < chains.end(c); ++i)
     {
         bb.add(positionsOld[i]);
         bb.add(x[i]);
-        displacement = max(displacement, mag(x[i] - positionsOld[i]));
     }
-    const vector grow(vector::uniform(displacement + SMALL*mag(bb.span())));
+    const vector grow(vector::uniform(margin + SMALL*mag(bb.span())));
     return boundBox(bb.min() - grow, bb.max() + grow);
 }
 
@@ -80,18 +80,15 @@ Foam::label findRoot(Foam::labelList& parent, Foam::label i)
 
 Foam::boolList Foam::polymerCloud::chainsMeetingOthers
 (
-    const List<boundBox>& boxes
+    const List<boundBox>& boxes,
+    bool& anyMeeting
 ) const
 {
     const label myProc = Pstream::myProcNo();
+    const List<boundBox>& procBounds = processorBounds_;
 
     // The chains reaching into another processor's mesh bounds, from every
     // processor
-    List<boundBox> procBounds(Pstream::nProcs());
-    procBounds[myProc] = mesh_.bounds();
-    Pstream::gatherList(procBounds);
-    Pstream::scatterList(procBounds);
-
     boolList meets(boxes.size(), false);
     List<List<boundBox>> exposed(Pstream::nProcs());
     {
@@ -118,12 +115,14 @@ Foam::boolList Foam::polymerCloud::chainsMeetingOthers
     Pstream::scatterList(exposed);
 
     // Chains that can meet an exposed chain of another processor: of any
-    // pair of chains of two processors that can meet, one is exposed
+    // pair of chains of two processors that can meet, one is exposed, so
+    // without such chains anywhere no chains of two processors meet
+    anyMeeting = false;
     forAll(boxes, c)
     {
         forAll(exposed, proci)
         {
-            if (meets[c] || proci == myProc)
+            if (proci == myProc)
             {
                 continue;
             }
@@ -132,10 +131,16 @@ Foam::boolList Foam::polymerCloud::chainsMeetingOthers
                 if (periodic_.overlapsImage(boxes[c], other))
                 {
                     meets[c] = true;
+                    anyMeeting = true;
                     break;
                 }
             }
         }
+    }
+    reduce(anyMeeting, orOp<bool>());
+    if (!anyMeeting)
+    {
+        return meets;
     }
 
     // The closure: chains that can meet those
@@ -261,12 +266,35 @@ void Foam::polymerCloud::groupCollidingChains()
     clockTime clock;
     const label myProc = Pstream::myProcNo();
 
+    // Room for the paths that collisions and rebounds turn: an elastic
+    // collision can give a bead up to about twice the largest speed of
+    // the beads it involves
+    scalar displacement = 0;
+    forAll(positionsOld_, i)
+    {
+        displacement = max
+        (
+            displacement,
+            magSqr(chains_.positions()[i] - positionsOld_[i])
+        );
+    }
+    const scalar margin =
+        2*Foam::sqrt(returnReduce(displacement, maxOp<scalar>()));
+
     List<boundBox> boxes(chains_.nChains());
     forAll(boxes, c)
     {
-        boxes[c] = sweptBox(chains_, c, positionsOld_);
+        boxes[c] = sweptBox(chains_, c, positionsOld_, margin);
     }
-    const boolList meets(chainsMeetingOthers(boxes));
+    bool anyMeeting = false;
+    const boolList meets(chainsMeetingOthers(boxes, anyMeeting));
+    if (!anyMeeting)
+    {
+        // No chains of two processors can meet this step
+        collisionBoxes_ = boxes;
+        migrationSeconds_ += clock.elapsedTime();
+        return;
+    }
 
     // The groups, formed on the master
     DynamicList<label> grouped;
@@ -311,7 +339,7 @@ void Foam::polymerCloud::groupCollidingChains()
     collisionBoxes_.setSize(chains_.nChains());
     forAll(collisionBoxes_, c)
     {
-        collisionBoxes_[c] = sweptBox(chains_, c, positionsOld_);
+        collisionBoxes_[c] = sweptBox(chains_, c, positionsOld_, margin);
     }
     migrationSeconds_ += clock.elapsedTime();
 }

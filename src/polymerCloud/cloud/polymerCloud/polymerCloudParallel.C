@@ -124,6 +124,11 @@ void Foam::polymerCloud::checkParallelSupport(const dictionary& subModels)
         return;
     }
 
+    processorBounds_.setSize(Pstream::nProcs());
+    processorBounds_[Pstream::myProcNo()] = mesh_.bounds();
+    Pstream::gatherList(processorBounds_);
+    Pstream::scatterList(processorBounds_);
+
     if (wall_->active() && !wall_->runsInParallel())
     {
         FatalIOErrorInFunction(subModels)

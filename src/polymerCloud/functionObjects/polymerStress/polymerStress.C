@@ -15,7 +15,6 @@ License
 #include "checkedInput.H"
 #include "OSspecific.H"
 #include "periodicImages.H"
-#include "locateBead.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -74,37 +73,18 @@ Foam::cloudFunctions::polymerStress::newField(const word& name) const
 }
 
 
-void Foam::cloudFunctions::polymerStress::locateBeads()
-{
-    const List<vector>& x = cloud_.chains().positions();
-    const periodicImages& periodic = periodicImages::New(cloud_.mesh());
-
-    labelList& cell = beadCells_.update(cloud_.chains());
-    forAll(x, i)
-    {
-        cell[i] = locateBead(search_(), periodic.wrap(x[i]), cell[i]);
-    }
-}
-
-
 void Foam::cloudFunctions::polymerStress::addToFields
 (
     const UList<symmTensor>& beadTerm
 )
 {
-    locateBeads();
-
-    const scalarField& V = cloud_.mesh().V();
+    // Each bead's term in the cell holding it at x-dagger, in whichever
+    // processor's mesh
+    sampler_->locate(cloud_.chains());
     symmTensorField& step = field_->primitiveFieldRef();
     step = Zero;
-    forAll(beadTerm, i)
-    {
-        const label celli = beadCells_.cells()[i];
-        if (celli >= 0)
-        {
-            step[celli] += beadTerm[i]/V[celli];
-        }
-    }
+    sampler_->addToCells(beadTerm, step);
+    step /= cloud_.mesh().V();
     field_->correctBoundaryConditions();
 
     fieldSum_ += step;
@@ -148,8 +128,7 @@ Foam::cloudFunctions::polymerStress::polymerStress
     field_(),
     fieldMean_(),
     fieldSum_(),
-    search_(),
-    beadCells_()
+    sampler_()
 {
     if (dict.getOrDefault<bool>("writeFields", true))
     {
@@ -157,7 +136,7 @@ Foam::cloudFunctions::polymerStress::polymerStress
         field_ = newField(name);
         fieldMean_ = newField(name + "Mean");
         fieldSum_.setSize(cloud.mesh().nCells(), Zero);
-        search_.reset(new meshSearch(cloud.mesh()));
+        sampler_.reset(new beadSampler(cloud.mesh()));
     }
 
     if (Pstream::master())

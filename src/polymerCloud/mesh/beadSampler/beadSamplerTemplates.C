@@ -1,0 +1,84 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "beadSampler.H"
+#include "PstreamBuffers.H"
+#include "clockTime.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class Type>
+void Foam::beadSampler::addToCells
+(
+    const UList<Type>& values,
+    Field<Type>& cellValues
+) const
+{
+    const labelList& hostCell = hostCells_.cells();
+    forAll(values, i)
+    {
+        if (hostCell[i] >= 0)
+        {
+            cellValues[hostCell[i]] += values[i];
+        }
+    }
+
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    // The unheld beads' values to the processors holding them
+    clockTime clock;
+    const labelList& owner = remoteOwners_.cells();
+    const labelList& cell = remoteCells_.cells();
+    List<DynamicList<label>> cells(Pstream::nProcs());
+    List<DynamicList<Type>> sent(Pstream::nProcs());
+    for (const label i : unheld_)
+    {
+        if (owner[i] >= 0)
+        {
+            cells[owner[i]].append(cell[i]);
+            sent[owner[i]].append(values[i]);
+        }
+    }
+
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(cells, proci)
+    {
+        if (cells[proci].size())
+        {
+            UOPstream os(proci, buffers);
+            os  << cells[proci] << sent[proci];
+        }
+    }
+    labelList recvSizes;
+    buffers.finishedSends(recvSizes);
+
+    forAll(recvSizes, proci)
+    {
+        if (recvSizes[proci])
+        {
+            UIPstream is(proci, buffers);
+            const labelList c(is);
+            const List<Type> v(is);
+            forAll(c, k)
+            {
+                cellValues[c[k]] += v[k];
+            }
+        }
+    }
+    exchangeSeconds_ += clock.elapsedTime();
+}
+
+
+// ************************************************************************* //
