@@ -91,7 +91,7 @@ frame readFrame(const Time& runTime, const word& cloudName)
     );
     f.timeIndex = timeDict.getOrDefault<label>("index", -1);
 
-    f.positions = polymerCloud::readPositions(io("positions"));
+    f.positions = polymerCloud::readSavedPositions(io("positions"));
     f.chainId = IOField<label>(io("chainId"));
     f.chainType = IOField<label>(io("chainType"));
     return f;
@@ -190,7 +190,8 @@ int main(int argc, char *argv[])
     for (const instant& t : times)
     {
         runTime.setTime(t, 0);
-        if (!isFile(runTime.timePath()/cloud::prefix/cloudName/"positions"))
+        const fileName cloudDir(runTime.timePath()/cloud::prefix/cloudName);
+        if (!isFile(cloudDir/"positions") && !isFile(cloudDir/"position"))
         {
             continue;
         }
