@@ -189,11 +189,13 @@ void Foam::polymerCloud::writePositions() const
 
     const List<vector>& x = chains_.positions();
 
-    // The host cell is informative only; chains need not be in the mesh
+    // The v1706 format's host cell: -1, not searched for (a tree search
+    // per bead and write); readers locate the points themselves, and
+    // chains need not be in the mesh
     os  << x.size() << nl << token::BEGIN_LIST << nl;
     for (const point& p : x)
     {
-        os  << p << token::SPACE << mesh_.findCell(periodic_.wrap(p)) << nl;
+        os  << p << token::SPACE << label(-1) << nl;
     }
     os  << token::END_LIST << nl;
 
