@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "polymerCloud.H"
+#include "IFstream.H"
 #include "OStringStream.H"
 #include "Tuple2.H"
 #include "initialisationModel.H"
@@ -662,16 +663,44 @@ Foam::polymerCloud::polymerCloud
 
     checkParallelSupport(subModels);
 
-    // Every processor of a parallel run restarts, or none does
-    const bool restart = returnReduce(savedCloudExists(), orOp<bool>());
+    // Every processor of a parallel run restarts, or none does; a parallel
+    // run may continue a serial one from the undecomposed case's chains
+    // (decomposePar carries no chains), every processor keeping its own
+    const bool restart =
+        returnReduce(savedCloudExists(savedCloudDir()), orOp<bool>());
+    const bool fromUndecomposed =
+        !restart && Pstream::parRun()
+     && returnReduce
+        (
+            savedCloudExists(undecomposedCloudDir()), andOp<bool>()
+        );
 
     if (restart)
     {
         Info<< name() << ": reading the chains saved in "
             << mesh_.time().timeName()/cloud::prefix/name() << endl;
-        if (savedCloudExists())
+        if (savedCloudExists(savedCloudDir()))
         {
-            readChains();
+            readChains(savedCloudDir());
+        }
+    }
+    else if (fromUndecomposed)
+    {
+        Info<< name() << ": reading the chains saved in the undecomposed"
+            << " case's " << mesh_.time().timeName()/cloud::prefix/name()
+            << endl;
+        readChains(undecomposedCloudDir());
+        keepOwnChains();
+
+        // The noise is keyed by the time index: continue the serial run's
+        // (decomposePar gives a case without fields no uniform/time, and
+        // the run would count from 0)
+        IFstream is(undecomposedCloudDir()/".."/".."/"uniform"/"time");
+        if (is.good())
+        {
+            const dictionary timeDict(is);
+            Time& runTime = const_cast<Time&>(mesh_.time());
+            runTime.setTime(runTime.value(), timeDict.get<label>("index"));
         }
     }
     else
@@ -696,7 +725,7 @@ Foam::polymerCloud::polymerCloud
 
     // The starting configuration is part of the record (and of the VTK
     // series), and a later run from the start time reads it back
-    if (!restart)
+    if (!restart && !fromUndecomposed)
     {
         write();
     }

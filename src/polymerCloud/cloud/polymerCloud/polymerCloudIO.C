@@ -52,11 +52,22 @@ Foam::IOobject Foam::polymerCloud::fieldIOobject
 }
 
 
-bool Foam::polymerCloud::savedCloudExists() const
+bool Foam::polymerCloud::savedCloudExists(const fileName& dir)
 {
-    return
-        isFile(fieldIOobject("position", IOobject::NO_READ).objectPath())
-     || isFile(fieldIOobject("positions", IOobject::NO_READ).objectPath());
+    return isFile(dir/"position") || isFile(dir/"positions");
+}
+
+
+Foam::fileName Foam::polymerCloud::savedCloudDir() const
+{
+    return mesh_.time().timePath()/cloud::prefix/name();
+}
+
+
+Foam::fileName Foam::polymerCloud::undecomposedCloudDir() const
+{
+    const Time& runTime = mesh_.time();
+    return runTime.globalPath()/runTime.timeName()/cloud::prefix/name();
 }
 
 
@@ -105,22 +116,22 @@ Foam::List<Foam::point> Foam::polymerCloud::readSavedPositions
 }
 
 
-void Foam::polymerCloud::readChains()
+void Foam::polymerCloud::readChains(const fileName& dir)
 {
-    const List<point> positions
-    (
-        readSavedPositions(fieldIOobject("positions", IOobject::MUST_READ))
-    );
-    const IOField<vector> U(fieldIOobject("U", IOobject::MUST_READ));
-    const IOField<label> chainId
-    (
-        fieldIOobject("chainId", IOobject::MUST_READ)
-    );
-    const IOField<label> bead(fieldIOobject("bead", IOobject::MUST_READ));
-    const IOField<label> typeIndex
-    (
-        fieldIOobject("chainType", IOobject::MUST_READ)
-    );
+    auto io = [&](const word& fieldName)
+    {
+        return IOobject
+        (
+            dir/fieldName, mesh_, IOobject::MUST_READ, IOobject::NO_WRITE,
+            false
+        );
+    };
+
+    const List<point> positions(readSavedPositions(io("positions")));
+    const IOField<vector> U(io("U"));
+    const IOField<label> chainId(io("chainId"));
+    const IOField<label> bead(io("bead"));
+    const IOField<label> typeIndex(io("chainType"));
 
     const label n = positions.size();
     if (U.size() != n || chainId.size() != n || bead.size() != n
