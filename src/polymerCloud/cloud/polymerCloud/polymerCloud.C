@@ -975,7 +975,8 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         if (collision_->type() != "none")
         {
             os  << "    chains grouped with other processors' for their"
-                << " collisions " << returnReduce(groupedChains_, sumOp<label>())
+                << " collisions "
+                << returnReduce(groupedChains_, sumOp<label>())
                 << ", chains that left their swept box "
                 << returnReduce(chainsOutgrowingBox_, sumOp<label>()) << nl;
         }

@@ -93,7 +93,10 @@ Foam::labelList Foam::beadSampler::askCells
             labelList c(is);
             forAll(p, k)
             {
-                c[k] = bounds.contains(p[k]) ? locateBead(search_, p[k], c[k]) : -1;
+                c[k] =
+                    bounds.contains(p[k])
+                  ? locateBead(search_, p[k], c[k])
+                  : -1;
             }
             UOPstream os(proci, answers);
             os  << c;
