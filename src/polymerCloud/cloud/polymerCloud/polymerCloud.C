@@ -613,6 +613,8 @@ Foam::polymerCloud::polymerCloud
     groupedChains_(0),
     collisionBoxes_(),
     processorBounds_(),
+    referenceSearch_(),
+    referenceCells_(),
     chainsOutgrowingBox_(0),
     evolveSeconds_(0),
     beadSteps_(0),

@@ -20,6 +20,7 @@ Description
 #include "pointField.H"
 #include "clockTime.H"
 #include "pointOwners.H"
+#include "locateBead.H"
 #include "bitSet.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -180,13 +181,23 @@ void Foam::polymerCloud::distributeChains()
     // Chains whose reference bead this processor's mesh does not hold go
     // to the processor that holds it; one that no processor holds (outside
     // the mesh) stays where it is
+    if (!referenceSearch_.valid())
+    {
+        referenceSearch_.reset(new meshSearch(mesh_));
+    }
+    labelList& cell = referenceCells_.update(chains_);
     const boundBox& bounds = mesh_.bounds();
     DynamicList<label> leaving;
     DynamicList<point> leavingPoints;
     for (label c = 0; c < chains_.nChains(); ++c)
     {
-        const point p = periodic_.wrap(x[referenceBead(c)]);
-        if (!bounds.contains(p) || mesh_.findCell(p) < 0)
+        const label i = referenceBead(c);
+        const point p = periodic_.wrap(x[i]);
+        cell[i] =
+            bounds.contains(p)
+          ? locateBead(referenceSearch_(), p, cell[i])
+          : -1;
+        if (cell[i] < 0)
         {
             leaving.append(c);
             leavingPoints.append(p);
