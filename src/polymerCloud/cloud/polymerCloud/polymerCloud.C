@@ -613,7 +613,6 @@ Foam::polymerCloud::polymerCloud
     groupedChains_(0),
     collisionBoxes_(),
     processorBounds_(),
-    referenceSearch_(),
     referenceCells_(),
     chainsOutgrowingBox_(0),
     evolveSeconds_(0),

@@ -21,6 +21,7 @@ Description
 #include "clockTime.H"
 #include "pointOwners.H"
 #include "locateBead.H"
+#include "meshSearchMeshObject.H"
 #include "bitSet.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -181,10 +182,7 @@ void Foam::polymerCloud::distributeChains()
     // Chains whose reference bead this processor's mesh does not hold go
     // to the processor that holds it; one that no processor holds (outside
     // the mesh) stays where it is
-    if (!referenceSearch_.valid())
-    {
-        referenceSearch_.reset(new meshSearch(mesh_));
-    }
+    const meshSearch& search = meshSearchMeshObject::New(mesh_);
     labelList& cell = referenceCells_.update(chains_);
     const boundBox& bounds = mesh_.bounds();
     DynamicList<label> leaving;
@@ -195,7 +193,7 @@ void Foam::polymerCloud::distributeChains()
         const point p = periodic_.wrap(x[i]);
         cell[i] =
             bounds.contains(p)
-          ? locateBead(referenceSearch_(), p, cell[i])
+          ? locateBead(search, p, cell[i])
           : -1;
         if (cell[i] < 0)
         {

@@ -45,7 +45,7 @@ Foam::List<Foam::DynamicList<Foam::label>> byProcessor
 Foam::beadSampler::beadSampler(const fvMesh& mesh)
 :
     mesh_(mesh),
-    search_(mesh),
+    search_(meshSearchMeshObject::New(mesh)),
     periodic_(periodicImages::New(mesh)),
     hostCells_(),
     remoteOwners_(),
