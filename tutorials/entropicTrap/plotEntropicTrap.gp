@@ -47,7 +47,7 @@ colour(i) = word("#2171b5 #238b45 #d94801", i + 1)
 label(i) = word("N=10 N=30 N=90", i + 1)
 
 set multiplot layout 4,1 title \
-    "Chains driven through an entropic trap array (side view x-z in rod lengths; inlet left, outlet right; 40, 30 and 15 chains of 10, 30 and 90 beads)\n " \
+    "Chains driven through an entropic trap array (side view x-z in rod lengths; inlet left, outlet right; 60, 60 and 15 chains of 10, 30 and 90 beads)\n " \
     font ",16"
 do for [k=1:ARGC] {
     # the time in the empty corner above the last wells
