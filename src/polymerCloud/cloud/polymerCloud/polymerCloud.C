@@ -221,29 +221,17 @@ void Foam::polymerCloud::checkRods(const fileName& origin) const
 
 void Foam::polymerCloud::checkInsideMesh(const fileName& origin) const
 {
-    // Beads this processor's mesh does not hold, checked against every
-    // processor's (collective)
+    // Every processor holds every new chain: each searches only the beads
+    // in its part of the mesh (collective)
     const List<vector>& x = chains_.positions();
-    DynamicList<label> unheld;
-    DynamicList<point> unheldPoints;
+    pointField images(x.size());
     forAll(x, i)
     {
-        const point p = periodic_.wrap(x[i]);
-        if (mesh_.findCell(p) < 0)
-        {
-            unheld.append(i);
-            unheldPoints.append(p);
-        }
+        images[i] = periodic_.wrap(x[i]);
     }
-    const labelList owner(pointOwners(mesh_, unheldPoints));
-
-    forAll(unheld, k)
+    const label i = replicatedPointOwners(mesh_, images).find(-1);
+    if (i >= 0)
     {
-        if (owner[k] >= 0)
-        {
-            continue;
-        }
-        const label i = unheld[k];
         const label c = chains_.chainOf(i);
         FatalIOErrorInFunction(properties_)
             << "Chain " << chains_.globalId(c) << " ("

@@ -20,8 +20,7 @@ Description
 #include "pointField.H"
 #include "clockTime.H"
 #include "pointOwners.H"
-#include "locateBead.H"
-#include "meshSearchMeshObject.H"
+#include "cellLocator.H"
 #include "bitSet.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -182,7 +181,7 @@ void Foam::polymerCloud::distributeChains()
     // Chains whose reference bead this processor's mesh does not hold go
     // to the processor that holds it; one that no processor holds (outside
     // the mesh) stays where it is
-    const meshSearch& search = meshSearchMeshObject::New(mesh_);
+    const cellLocator& locator = cellLocator::New(mesh_);
     labelList& cell = referenceCells_.update(chains_);
     const boundBox& bounds = mesh_.bounds();
     DynamicList<label> leaving;
@@ -193,7 +192,7 @@ void Foam::polymerCloud::distributeChains()
         const point p = periodic_.wrap(x[i]);
         cell[i] =
             bounds.contains(p)
-          ? locateBead(search, p, cell[i])
+          ? locator.findCell(p, cell[i])
           : -1;
         if (cell[i] < 0)
         {

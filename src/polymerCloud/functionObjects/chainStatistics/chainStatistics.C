@@ -12,6 +12,7 @@ License
 
 #include "chainStatistics.H"
 #include "pointOwners.H"
+#include "cellLocator.H"
 #include "periodicImages.H"
 #include "polymerCloud.H"
 #include "checkedInput.H"
@@ -94,6 +95,7 @@ Foam::label Foam::cloudFunctions::chainStatistics::rodsOutside() const
     const List<vector>& x = chains.positions();
     const fvMesh& mesh = cloud_.mesh();
     const periodicImages& periodic = periodicImages::New(mesh);
+    const cellLocator& locator = cellLocator::New(mesh);
 
     // Midpoints this processor's mesh does not hold may be in another's
     DynamicList<point> unheld;
@@ -107,7 +109,7 @@ Foam::label Foam::cloudFunctions::chainStatistics::rodsOutside() const
             (
                 0.5*(x[first + k] + x[first + (k + 1) % size])
             );
-            if (!mesh.bounds().contains(middle) || mesh.findCell(middle) < 0)
+            if (locator.findCell(middle) < 0)
             {
                 unheld.append(middle);
             }

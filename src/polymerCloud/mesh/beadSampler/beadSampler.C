@@ -11,7 +11,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "beadSampler.H"
-#include "locateBead.H"
 #include "pointOwners.H"
 #include "PstreamBuffers.H"
 #include "clockTime.H"
@@ -45,7 +44,7 @@ Foam::List<Foam::DynamicList<Foam::label>> byProcessor
 Foam::beadSampler::beadSampler(const fvMesh& mesh)
 :
     mesh_(mesh),
-    search_(meshSearchMeshObject::New(mesh)),
+    locator_(cellLocator::New(mesh)),
     periodic_(periodicImages::New(mesh)),
     hostCells_(),
     remoteOwners_(),
@@ -95,7 +94,7 @@ Foam::labelList Foam::beadSampler::askCells
             {
                 c[k] =
                     bounds.contains(p[k])
-                  ? locateBead(search_, p[k], c[k])
+                  ? locator_.findCell(p[k], c[k])
                   : -1;
             }
             UOPstream os(proci, answers);
@@ -214,7 +213,7 @@ void Foam::beadSampler::locate(const polymerChains& chains)
     {
         const point p = periodic_.wrap(x[i]);
         hostCell[i] =
-            bounds.contains(p) ? locateBead(search_, p, hostCell[i]) : -1;
+            bounds.contains(p) ? locator_.findCell(p, hostCell[i]) : -1;
         if (hostCell[i] < 0)
         {
             unheld_.append(i);

@@ -12,6 +12,7 @@ License
 
 #include "pointOwners.H"
 #include "pointField.H"
+#include "cellLocator.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -27,11 +28,11 @@ Foam::labelList claims
 {
     using namespace Foam;
 
-    const boundBox& bounds = mesh.bounds();
+    const cellLocator& locator = cellLocator::New(mesh);
     labelList claim(points.size(), labelMax);
     forAll(points, i)
     {
-        if (bounds.contains(points[i]) && mesh.findCell(points[i]) >= 0)
+        if (locator.findCell(points[i]) >= 0)
         {
             claim[i] = Pstream::myProcNo();
         }

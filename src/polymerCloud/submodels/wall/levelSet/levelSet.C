@@ -11,7 +11,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "levelSet.H"
-#include "locateBead.H"
 #include "wallDist.H"
 #include "fvcGrad.H"
 #include "wallPolyPatch.H"
@@ -53,6 +52,7 @@ Foam::wallModels::levelSet::levelSet
             coeffDict_, "clearance", "<least distance of a bead from a wall>"
         )
     ),
+    locator_(cellLocator::New(mesh)),
     search_(mesh),
     distance_(wallDist::New(mesh).y()),
     distanceGradient_("levelSetGradient", fvc::grad(distance_)),
@@ -70,7 +70,7 @@ Foam::scalar Foam::wallModels::levelSet::distanceAt
 ) const
 {
     const point image = periodic_.wrap(p);
-    cell = locateBead(search_, image, cell);
+    cell = locator_.findCell(image, cell);
     if (cell < 0)
     {
         return -1;

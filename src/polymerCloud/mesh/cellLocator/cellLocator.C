@@ -1,0 +1,180 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "cellLocator.H"
+#include "Random.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(cellLocator, 0);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cellLocator::boxedCells::boxedCells
+(
+    const polyMesh& mesh,
+    const List<treeBoundBox>& boxes
+)
+:
+    treeDataCell(false, mesh, polyMesh::CELL_TETS),
+    boxes_(boxes)
+{}
+
+
+Foam::cellLocator::cellLocator(const polyMesh& mesh)
+:
+    MeshObject<polyMesh, GeometricMeshObject, cellLocator>(mesh),
+    boxes_(mesh.nCells()),
+    tree_()
+{
+    const pointField& points = mesh.points();
+    const cellList& cells = mesh.cells();
+    const faceList& faces = mesh.faces();
+    forAll(cells, celli)
+    {
+        treeBoundBox& bb = boxes_[celli];
+        bb = treeBoundBox(boundBox::invertedBox);
+        for (const label facei : cells[celli])
+        {
+            for (const label pointi : faces[facei])
+            {
+                bb.add(points[pointi]);
+            }
+        }
+        bb.inflate(1e-6);
+    }
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::cellLocator::boxedCells::contains
+(
+    const label index,
+    const point& p
+) const
+{
+    return boxes_[index].contains(p) && treeDataCell::contains(index, p);
+}
+
+
+bool Foam::cellLocator::inCell(const point& p, const label celli) const
+{
+    return
+        boxes_[celli].contains(p)
+     && mesh().pointInCell(p, celli, polyMesh::CELL_TETS);
+}
+
+
+Foam::label Foam::cellLocator::walk(const point& p, label celli) const
+{
+    if (inCell(p, celli))
+    {
+        return celli;
+    }
+
+    const cellList& cells = mesh().cells();
+    const labelList& owner = mesh().faceOwner();
+    const labelList& neighbour = mesh().faceNeighbour();
+    const vectorField& centres = mesh().cellCentres();
+    scalar nearest = magSqr(centres[celli] - p);
+
+    while (true)
+    {
+        label next = -1;
+        for (const label facei : cells[celli])
+        {
+            if (!mesh().isInternalFace(facei))
+            {
+                continue;
+            }
+            const label other =
+                (owner[facei] == celli) ? neighbour[facei] : owner[facei];
+            if (inCell(p, other))
+            {
+                return other;
+            }
+            const scalar distance = magSqr(centres[other] - p);
+            if (distance < nearest)
+            {
+                nearest = distance;
+                next = other;
+            }
+        }
+        if (next < 0)
+        {
+            return -1;
+        }
+        celli = next;
+    }
+}
+
+
+const Foam::indexedOctree<Foam::cellLocator::boxedCells>&
+Foam::cellLocator::tree() const
+{
+    if (!tree_.valid())
+    {
+        // The domain and the tree's parameters of meshSearch::cellTree
+        Random rndGen(261782);
+        treeBoundBox overallBb(mesh().points());
+        overallBb = overallBb.extend(rndGen, 1e-4);
+        overallBb.min() -= point::uniform(ROOTVSMALL);
+        overallBb.max() += point::uniform(ROOTVSMALL);
+
+        tree_.reset
+        (
+            new indexedOctree<boxedCells>
+            (
+                boxedCells(mesh(), boxes_),
+                overallBb,
+                8,      // maxLevel
+                10,     // leafSize
+                6.0     // duplicity
+            )
+        );
+    }
+    return *tree_;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::cellLocator::findCell(const point& p) const
+{
+    return mesh().bounds().contains(p) ? tree().findInside(p) : -1;
+}
+
+
+Foam::label Foam::cellLocator::findCell
+(
+    const point& p,
+    const label previousCell
+) const
+{
+    if (previousCell >= 0)
+    {
+        const label celli = walk(p, previousCell);
+        if (celli >= 0)
+        {
+            return celli;
+        }
+    }
+    return findCell(p);
+}
+
+
+// ************************************************************************* //
