@@ -51,6 +51,11 @@ Foam::beadSampler::beadSampler(const fvMesh& mesh)
     remoteCells_(),
     unheld_(),
     unheldPoints_(),
+    hostTets_(),
+    hostCoordinates_(),
+    answeredTets_(Pstream::nProcs()),
+    answeredCoordinates_(Pstream::nProcs()),
+    locatedBeads_(Pstream::nProcs()),
     nOutside_(0),
     exchangeSeconds_(0)
 {}
@@ -60,10 +65,11 @@ Foam::beadSampler::beadSampler(const fvMesh& mesh)
 
 Foam::labelList Foam::beadSampler::askCells
 (
+    const labelUList& beads,
     const UList<point>& points,
     const labelUList& proc,
     const labelUList& startCell
-) const
+)
 {
     const List<DynamicList<label>> asked(byProcessor(proc));
 
@@ -80,7 +86,7 @@ Foam::labelList Foam::beadSampler::askCells
     labelList recvSizes;
     requests.finishedSends(recvSizes);
 
-    // Answer the others' requests
+    // Answer the others' requests, keeping the tets found for sample
     const boundBox& bounds = mesh_.bounds();
     PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
     forAll(recvSizes, proci)
@@ -92,10 +98,17 @@ Foam::labelList Foam::beadSampler::askCells
             labelList c(is);
             forAll(p, k)
             {
-                c[k] =
+                barycentric coordinates;
+                const tetIndices tet =
                     bounds.contains(p[k])
-                  ? locator_.findCell(p[k], c[k])
-                  : -1;
+                  ? locator_.findTet(p[k], c[k], coordinates)
+                  : tetIndices();
+                c[k] = tet.cell();
+                if (c[k] >= 0)
+                {
+                    answeredTets_[proci].append(tet);
+                    answeredCoordinates_[proci].append(coordinates);
+                }
             }
             UOPstream os(proci, answers);
             os  << c;
@@ -110,7 +123,15 @@ Foam::labelList Foam::beadSampler::askCells
         {
             UIPstream is(proci, answers);
             const labelList c(is);
-            UIndirectList<label>(found, asked[proci]) = c;
+            forAll(c, k)
+            {
+                const label j = asked[proci][k];
+                found[j] = c[k];
+                if (c[k] >= 0)
+                {
+                    locatedBeads_[proci].append(beads[j]);
+                }
+            }
         }
     }
     return found;
@@ -140,7 +161,16 @@ void Foam::beadSampler::locateRemote(labelList& owner, labelList& cell)
         owner[i] = -1;
         cell[i] = -1;
     }
-    const labelList found(askCells(askedPoint, askedProc, askedCell));
+    const labelList found
+    (
+        askCells
+        (
+            UIndirectList<label>(unheld_, asked)(),
+            askedPoint,
+            askedProc,
+            askedCell
+        )
+    );
     forAll(asked, j)
     {
         if (found[j] >= 0)
@@ -176,10 +206,16 @@ void Foam::beadSampler::locateRemote(labelList& owner, labelList& cell)
             located.append(j);
         }
     }
+    labelList lostBeads(located.size());
+    forAll(located, m)
+    {
+        lostBeads[m] = unheld_[lost[located[m]]];
+    }
     const labelList lostCell
     (
         askCells
         (
+            lostBeads,
             UIndirectList<point>(lostPoint, located)(),
             UIndirectList<label>(lostProc, located)(),
             labelList(located.size(), -1)
@@ -187,9 +223,8 @@ void Foam::beadSampler::locateRemote(labelList& owner, labelList& cell)
     );
     forAll(located, m)
     {
-        const label i = unheld_[lost[located[m]]];
-        owner[i] = lostProc[located[m]];
-        cell[i] = lostCell[m];
+        owner[lostBeads[m]] = lostProc[located[m]];
+        cell[lostBeads[m]] = lostCell[m];
     }
 }
 
@@ -205,6 +240,14 @@ void Foam::beadSampler::locate(const polymerChains& chains)
 
     unheld_.clear();
     unheldPoints_.clear();
+    hostTets_.setSize(x.size());
+    hostCoordinates_.setSize(x.size());
+    forAll(answeredTets_, proci)
+    {
+        answeredTets_[proci].clear();
+        answeredCoordinates_[proci].clear();
+        locatedBeads_[proci].clear();
+    }
 
     // A bead outside this processor's bounding box is in another's mesh,
     // or in none: no search here
@@ -212,8 +255,11 @@ void Foam::beadSampler::locate(const polymerChains& chains)
     forAll(x, i)
     {
         const point p = periodic_.wrap(x[i]);
-        hostCell[i] =
-            bounds.contains(p) ? locator_.findCell(p, hostCell[i]) : -1;
+        hostTets_[i] =
+            bounds.contains(p)
+          ? locator_.findTet(p, hostCell[i], hostCoordinates_[i])
+          : tetIndices();
+        hostCell[i] = hostTets_[i].cell();
         if (hostCell[i] < 0)
         {
             unheld_.append(i);
@@ -243,18 +289,15 @@ void Foam::beadSampler::locate(const polymerChains& chains)
 
 void Foam::beadSampler::sample
 (
-    const polymerChains& chains,
     const interpolation<vector>& field,
     UList<vector>& values
 ) const
 {
-    const List<vector>& x = chains.positions();
-    const labelList& hostCell = hostCells_.cells();
-    forAll(x, i)
+    forAll(hostTets_, i)
     {
         values[i] =
-            (hostCell[i] >= 0)
-          ? field.interpolate(periodic_.wrap(x[i]), hostCell[i])
+            (hostTets_[i].cell() >= 0)
+          ? field.interpolate(hostCoordinates_[i], hostTets_[i])
           : Zero;
     }
 
@@ -263,66 +306,44 @@ void Foam::beadSampler::sample
         return;
     }
 
-    // The unheld beads' values from the processors holding them
+    // The values at the beads located for other processors, to them; the
+    // values at this one's unheld beads, from the processors holding them
     clockTime clock;
-    const labelList& owner = remoteOwners_.cells();
-    const labelList& cell = remoteCells_.cells();
-    DynamicList<label> asked(unheld_.size());
-    DynamicList<label> askedProc(unheld_.size());
-    forAll(unheld_, k)
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(answeredTets_, proci)
     {
-        if (owner[unheld_[k]] >= 0)
+        const DynamicList<tetIndices>& tets = answeredTets_[proci];
+        if (tets.size())
         {
-            asked.append(k);
-            askedProc.append(owner[unheld_[k]]);
-        }
-    }
-    const List<DynamicList<label>> toProc(byProcessor(askedProc));
-
-    PstreamBuffers requests(Pstream::commsTypes::nonBlocking);
-    forAll(toProc, proci)
-    {
-        if (toProc[proci].size())
-        {
-            const labelList k(UIndirectList<label>(asked, toProc[proci]));
-            const labelList beads(UIndirectList<label>(unheld_, k));
-            UOPstream os(proci, requests);
-            os  << UIndirectList<point>(unheldPoints_, k)
-                << UIndirectList<label>(cell, beads);
-        }
-    }
-    labelList recvSizes;
-    requests.finishedSends(recvSizes);
-
-    PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
-    forAll(recvSizes, proci)
-    {
-        if (recvSizes[proci])
-        {
-            UIPstream is(proci, requests);
-            const pointField p(is);
-            const labelList c(is);
-            vectorField v(p.size());
-            forAll(p, k)
+            const DynamicList<barycentric>& coordinates =
+                answeredCoordinates_[proci];
+            vectorField v(tets.size());
+            forAll(tets, k)
             {
-                v[k] = field.interpolate(p[k], c[k]);
+                v[k] = field.interpolate(coordinates[k], tets[k]);
             }
-            UOPstream os(proci, answers);
+            UOPstream os(proci, buffers);
             os  << v;
         }
     }
-    answers.finishedSends(recvSizes);
+    labelList recvSizes;
+    buffers.finishedSends(recvSizes);
 
     forAll(recvSizes, proci)
     {
         if (recvSizes[proci])
         {
-            UIPstream is(proci, answers);
+            UIPstream is(proci, buffers);
             const vectorField v(is);
-            forAll(v, m)
+            const DynamicList<label>& beads = locatedBeads_[proci];
+            if (v.size() != beads.size())
             {
-                values[unheld_[asked[toProc[proci][m]]]] = v[m];
+                FatalErrorInFunction
+                    << "Processor " << proci << " sent " << v.size()
+                    << " values for the " << beads.size()
+                    << " beads it located" << abort(FatalError);
             }
+            UIndirectList<vector>(values, beads) = v;
         }
     }
     exchangeSeconds_ += clock.elapsedTime();

@@ -61,27 +61,67 @@ Foam::cellLocator::cellLocator(const polyMesh& mesh)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-bool Foam::cellLocator::boxedCells::contains
+bool Foam::cellLocator::inTets
 (
-    const label index,
-    const point& p
-) const
+    const polyMesh& mesh,
+    const point& p,
+    const label celli,
+    tetIndices& tet,
+    barycentric& coordinates
+)
 {
-    return boxes_[index].contains(p) && treeDataCell::contains(index, p);
+    // cellPointWeight's acceptance: degenerate tets skipped, coordinates
+    // down to -SMALL accepted (a point on a face shared by two tets or
+    // two cells is in both)
+    const scalar tol = SMALL;
+    const scalar cellVolume = mesh.cellVolumes()[celli];
+    const faceList& faces = mesh.faces();
+
+    for (const label facei : mesh.cells()[celli])
+    {
+        const label nTets = faces[facei].size() - 2;
+        for (label tetPti = 1; tetPti <= nTets; ++tetPti)
+        {
+            tet = tetIndices(celli, facei, tetPti);
+            const scalar det =
+                tet.tet(mesh).pointToBarycentric(p, coordinates);
+            if
+            (
+                mag(det/cellVolume) > tol
+             && cmptMin(coordinates) + tol > 0
+            )
+            {
+                return true;
+            }
+        }
+    }
+    return false;
 }
 
 
-bool Foam::cellLocator::inCell(const point& p, const label celli) const
+bool Foam::cellLocator::inCell
+(
+    const point& p,
+    const label celli,
+    tetIndices& tet,
+    barycentric& coordinates
+) const
 {
     return
         boxes_[celli].contains(p)
-     && mesh().pointInCell(p, celli, polyMesh::CELL_TETS);
+     && inTets(mesh(), p, celli, tet, coordinates);
 }
 
 
-Foam::label Foam::cellLocator::walk(const point& p, label celli) const
+Foam::label Foam::cellLocator::walk
+(
+    const point& p,
+    label celli,
+    tetIndices& tet,
+    barycentric& coordinates
+) const
 {
-    if (inCell(p, celli))
+    if (inCell(p, celli, tet, coordinates))
     {
         return celli;
     }
@@ -103,7 +143,7 @@ Foam::label Foam::cellLocator::walk(const point& p, label celli) const
             }
             const label other =
                 (owner[facei] == celli) ? neighbour[facei] : owner[facei];
-            if (inCell(p, other))
+            if (inCell(p, other, tet, coordinates))
             {
                 return other;
             }
@@ -165,15 +205,32 @@ Foam::label Foam::cellLocator::findCell
     const label previousCell
 ) const
 {
-    if (previousCell >= 0)
+    barycentric coordinates;
+    return findTet(p, previousCell, coordinates).cell();
+}
+
+
+Foam::tetIndices Foam::cellLocator::findTet
+(
+    const point& p,
+    const label previousCell,
+    barycentric& coordinates
+) const
+{
+    tetIndices tet;
+    if (previousCell >= 0 && walk(p, previousCell, tet, coordinates) >= 0)
     {
-        const label celli = walk(p, previousCell);
-        if (celli >= 0)
-        {
-            return celli;
-        }
+        return tet;
     }
-    return findCell(p);
+
+    // The tree gives the cell; its tet is searched again (rare: a first
+    // search, or a walk that stopped short)
+    const label celli = findCell(p);
+    if (celli < 0 || !inTets(mesh(), p, celli, tet, coordinates))
+    {
+        return tetIndices();
+    }
+    return tet;
 }
 
 

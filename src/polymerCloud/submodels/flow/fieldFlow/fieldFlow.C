@@ -155,7 +155,7 @@ void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
 
     sampler_.locate(chains);
     beadVelocity_.setSize(chains.nBeads());
-    sampler_.sample(chains, interpolator(), beadVelocity_);
+    sampler_.sample(interpolator(), beadVelocity_);
 
     // The corrector's flow: the mean of the step's start and the predicted
     // end (beads injected since have no start value)

@@ -91,7 +91,7 @@ void Foam::forceModels::electrophoretic::addForce
 {
     sampler_.locate(chains);
     beadField_.setSize(chains.nBeads());
-    sampler_.sample(chains, interpolateField_(), beadField_);
+    sampler_.sample(interpolateField_(), beadField_);
     forAll(beadField_, i)
     {
         force[i] += charge_*beadField_[i];
