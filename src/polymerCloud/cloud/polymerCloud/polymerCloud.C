@@ -923,6 +923,32 @@ void Foam::polymerCloud::writeSummary(Ostream& os) const
 }
 
 
+void Foam::polymerCloud::writeProcessorLoads(Ostream& os) const
+{
+    // A processor's exchange time includes its waits for the others: the
+    // busiest one waits least
+    List<FixedList<scalar, 4>> loads(Pstream::nProcs());
+    loads[Pstream::myProcNo()] = FixedList<scalar, 4>
+    ({
+        scalar(chains_.nChains()),
+        scalar(chains_.nBeads()),
+        evolveSeconds_,
+        migrationSeconds_ + flow_->exchangeSeconds()
+    });
+    Pstream::gatherList(loads);
+
+    os  << "    processors' loads (chains, beads, s of cloud evolution,"
+        << " of which exchanging and waiting):" << nl;
+    forAll(loads, proci)
+    {
+        os  << "        processor" << proci << ": "
+            << label(loads[proci][0]) << " chains, "
+            << label(loads[proci][1]) << " beads, " << loads[proci][2]
+            << " s (" << loads[proci][3] << " s)" << nl;
+    }
+}
+
+
 void Foam::polymerCloud::writeReport(Ostream& os) const
 {
     const scalar seconds = returnReduce(evolveSeconds_, maxOp<scalar>());
@@ -975,6 +1001,7 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
             << " s, beads' flow and momentum "
             << returnReduce(flow_->exchangeSeconds(), maxOp<scalar>())
             << " s" << nl;
+        writeProcessorLoads(os);
     }
     os
         << "    beads " << nParcels() << ", outside the mesh "

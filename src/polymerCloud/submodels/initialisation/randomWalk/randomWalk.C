@@ -101,49 +101,70 @@ Foam::List<Foam::point> Foam::initialisationModels::randomWalk::walk
 }
 
 
-bool Foam::initialisationModels::randomWalk::inside
-(
-    const fvMesh& mesh,
-    const List<point>& x
-)
-{
-    // Each bead in some processor's mesh (every processor draws the same
-    // chains and takes part), at its image inside the cyclic patches
-    const periodicImages& periodic = periodicImages::New(mesh);
-    pointField images(x.size());
-    forAll(x, i)
-    {
-        images[i] = periodic.wrap(x[i]);
-    }
-    return !replicatedPointOwners(mesh, images).found(-1);
-}
-
-
-Foam::List<Foam::point> Foam::initialisationModels::randomWalk::walkInside
+Foam::List<Foam::List<Foam::point>>
+Foam::initialisationModels::randomWalk::walksInside
 (
     const chainType& type,
     const boundBox& box,
     const label seed,
-    const label globalId,
+    const label firstId,
+    const label nChains,
     const fvMesh& mesh,
     const dictionary& dict
 )
 {
-    List<point> x = walk(type, box, seed, globalId, 0);
-
-    for (label attempt = 1; !inside(mesh, x); ++attempt)
+    List<List<point>> x(nChains);
+    forAll(x, n)
     {
-        if (attempt == 1000)
+        x[n] = walk(type, box, seed, firstId + n, 0);
+    }
+
+    // The beads' images inside the cyclic patches are what must be in
+    // the mesh
+    const periodicImages& periodic = periodicImages::New(mesh);
+    labelList drawing(identity(nChains));
+    for (label attempt = 1; drawing.size(); ++attempt)
+    {
+        pointField images(drawing.size()*type.nBeads());
+        label k = 0;
+        for (const label n : drawing)
+        {
+            for (const point& p : x[n])
+            {
+                images[k++] = periodic.wrap(p);
+            }
+        }
+        const labelList owners(replicatedPointOwners(mesh, images));
+
+        DynamicList<label> outside;
+        forAll(drawing, j)
+        {
+            const SubList<label> beadOwners
+            (
+                owners, type.nBeads(), j*type.nBeads()
+            );
+            if (beadOwners.found(-1))
+            {
+                outside.append(drawing[j]);
+            }
+        }
+        drawing.transfer(outside);
+
+        if (drawing.size() && attempt == 1000)
         {
             FatalIOErrorInFunction(dict)
-                << "Chain " << globalId << " (" << type.name()
-                << ") from " << dict.name() << " has beads outside the mesh"
-                << " in 1000 random walks from the box " << box << nl
+                << "Chain " << firstId + drawing.first() << " ("
+                << type.name() << ") from " << dict.name()
+                << " has beads outside the mesh in 1000 random walks from"
+                << " the box " << box << nl
                 << "    expected: min and max of a box well inside the mesh"
                 << " for chains of " << type.nBeads() << " beads"
                 << exit(FatalIOError);
         }
-        x = walk(type, box, seed, globalId, attempt);
+        for (const label n : drawing)
+        {
+            x[n] = walk(type, box, seed, firstId + n, attempt);
+        }
     }
 
     return x;
@@ -186,15 +207,30 @@ void Foam::initialisationModels::randomWalk::create
             chainsDict, e.keyword(), 0, "<number of chains>"
         );
 
-        for (label n = 0; n < number; ++n)
+        const label firstId = chains.nChains();
+        List<List<point>> x;
+        if (insideMesh_)
         {
-            const label globalId = chains.nChains();
-            const List<point> x =
-                insideMesh_
-              ? walkInside(type, box_, seed, globalId, mesh_, coeffDict_)
-              : walk(type, box_, seed, globalId, 0);
+            x = walksInside
+            (
+                type, box_, seed, firstId, number, mesh_, coeffDict_
+            );
+        }
+        else
+        {
+            x.setSize(number);
+            forAll(x, n)
+            {
+                x[n] = walk(type, box_, seed, firstId + n, 0);
+            }
+        }
 
-            chains.append(typei, globalId, x, List<vector>(x.size(), Zero));
+        forAll(x, n)
+        {
+            chains.append
+            (
+                typei, firstId + n, x[n], List<vector>(x[n].size(), Zero)
+            );
         }
     }
 }

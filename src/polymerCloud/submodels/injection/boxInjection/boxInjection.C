@@ -104,13 +104,16 @@ Foam::label Foam::injectionModels::boxInjection::inject
     }
     const chainType& type = chains.types()[typei];
 
-    for (label k = 0; k < nNew; ++k)
+    const List<List<point>> x = initialisationModels::randomWalk::walksInside
+    (
+        type, box_, seed, nextGlobalId, nNew, mesh_, coeffDict_
+    );
+    forAll(x, k)
     {
-        const List<point> x = initialisationModels::randomWalk::walkInside
+        chains.append
         (
-            type, box_, seed, nextGlobalId, mesh_, coeffDict_
+            typei, nextGlobalId, x[k], List<vector>(x[k].size(), Zero)
         );
-        chains.append(typei, nextGlobalId, x, List<vector>(x.size(), Zero));
         ++nextGlobalId;
     }
 
