@@ -250,14 +250,19 @@ void Foam::beadSampler::locate(const polymerChains& chains)
     }
 
     // A bead outside this processor's bounding box is in another's mesh,
-    // or in none: no search here
+    // or in none: no search here. The tets of the last locate are tried
+    // first, as hints only: beads that came or went since shift the others
     const boundBox& bounds = mesh_.bounds();
     forAll(x, i)
     {
         const point p = periodic_.wrap(x[i]);
+        const tetIndices previous =
+            (hostTets_[i].cell() == hostCell[i])
+          ? hostTets_[i]
+          : tetIndices(hostCell[i], -1, -1);
         hostTets_[i] =
             bounds.contains(p)
-          ? locator_.findTet(p, hostCell[i], hostCoordinates_[i])
+          ? locator_.findTet(p, previous, hostCoordinates_[i])
           : tetIndices();
         hostCell[i] = hostTets_[i].cell();
         if (hostCell[i] < 0)

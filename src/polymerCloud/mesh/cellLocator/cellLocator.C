@@ -61,6 +61,25 @@ Foam::cellLocator::cellLocator(const polyMesh& mesh)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+bool Foam::cellLocator::inTet
+(
+    const polyMesh& mesh,
+    const point& p,
+    const tetIndices& tet,
+    barycentric& coordinates
+)
+{
+    // cellPointWeight's acceptance: degenerate tets skipped, coordinates
+    // down to -SMALL accepted (a point on a face shared by two tets or
+    // two cells is in both)
+    const scalar tol = SMALL;
+    const scalar det = tet.tet(mesh).pointToBarycentric(p, coordinates);
+    return
+        mag(det/mesh.cellVolumes()[tet.cell()]) > tol
+     && cmptMin(coordinates) + tol > 0;
+}
+
+
 bool Foam::cellLocator::inTets
 (
     const polyMesh& mesh,
@@ -70,26 +89,27 @@ bool Foam::cellLocator::inTets
     barycentric& coordinates
 )
 {
-    // cellPointWeight's acceptance: degenerate tets skipped, coordinates
-    // down to -SMALL accepted (a point on a face shared by two tets or
-    // two cells is in both)
-    const scalar tol = SMALL;
-    const scalar cellVolume = mesh.cellVolumes()[celli];
-    const faceList& faces = mesh.faces();
+    // A tet of this cell given in tet first: a bead a step later is most
+    // often still in the tet that held it
+    const tetIndices first(tet);
+    const bool hasFirst = (first.cell() == celli && first.face() >= 0);
+    if (hasFirst && inTet(mesh, p, first, coordinates))
+    {
+        return true;
+    }
 
+    const faceList& faces = mesh.faces();
     for (const label facei : mesh.cells()[celli])
     {
         const label nTets = faces[facei].size() - 2;
         for (label tetPti = 1; tetPti <= nTets; ++tetPti)
         {
+            if (hasFirst && facei == first.face() && tetPti == first.tetPt())
+            {
+                continue;
+            }
             tet = tetIndices(celli, facei, tetPti);
-            const scalar det =
-                tet.tet(mesh).pointToBarycentric(p, coordinates);
-            if
-            (
-                mag(det/cellVolume) > tol
-             && cmptMin(coordinates) + tol > 0
-            )
+            if (inTet(mesh, p, tet, coordinates))
             {
                 return true;
             }
@@ -217,8 +237,23 @@ Foam::tetIndices Foam::cellLocator::findTet
     barycentric& coordinates
 ) const
 {
-    tetIndices tet;
-    if (previousCell >= 0 && walk(p, previousCell, tet, coordinates) >= 0)
+    return findTet(p, tetIndices(previousCell, -1, -1), coordinates);
+}
+
+
+Foam::tetIndices Foam::cellLocator::findTet
+(
+    const point& p,
+    const tetIndices& previous,
+    barycentric& coordinates
+) const
+{
+    tetIndices tet(previous);
+    if
+    (
+        previous.cell() >= 0
+     && walk(p, previous.cell(), tet, coordinates) >= 0
+    )
     {
         return tet;
     }
