@@ -11,7 +11,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "beadSampler.H"
-#include "pointOwners.H"
 #include "PstreamBuffers.H"
 #include "clockTime.H"
 
@@ -56,6 +55,7 @@ Foam::beadSampler::beadSampler(const fvMesh& mesh)
     answeredTets_(Pstream::nProcs()),
     answeredCoordinates_(Pstream::nProcs()),
     locatedBeads_(Pstream::nProcs()),
+    processorBounds_(),
     nOutside_(0),
     exchangeSeconds_(0)
 {}
@@ -140,91 +140,53 @@ Foam::labelList Foam::beadSampler::askCells
 
 void Foam::beadSampler::locateRemote(labelList& owner, labelList& cell)
 {
-    const label myProc = Pstream::myProcNo();
+    if (processorBounds_.empty())
+    {
+        processorBounds_.setSize(Pstream::nProcs());
+        processorBounds_[Pstream::myProcNo()] = mesh_.bounds();
+        Pstream::gatherList(processorBounds_);
+        Pstream::scatterList(processorBounds_);
+    }
 
-    // First where each bead was: most beads stay in the same cell or one
-    // next to it
-    DynamicList<label> asked(unheld_.size());
+    // Each unheld bead is asked of every other processor whose mesh's
+    // bounding box holds it (no other mesh can), in one exchange: from the
+    // cell that held it when that processor did, by a tree search
+    // otherwise. The lowest processor that finds it holds it.
+    const label myProc = Pstream::myProcNo();
+    DynamicList<label> askedBead(unheld_.size());
     DynamicList<point> askedPoint(unheld_.size());
     DynamicList<label> askedProc(unheld_.size());
     DynamicList<label> askedCell(unheld_.size());
     forAll(unheld_, k)
     {
         const label i = unheld_[k];
-        if (owner[i] >= 0 && owner[i] != myProc)
+        const point& p = unheldPoints_[k];
+        forAll(processorBounds_, proci)
         {
-            asked.append(k);
-            askedPoint.append(unheldPoints_[k]);
-            askedProc.append(owner[i]);
-            askedCell.append(cell[i]);
+            if (proci != myProc && processorBounds_[proci].contains(p))
+            {
+                askedBead.append(i);
+                askedPoint.append(p);
+                askedProc.append(proci);
+                askedCell.append(proci == owner[i] ? cell[i] : -1);
+            }
         }
         owner[i] = -1;
         cell[i] = -1;
     }
+
     const labelList found
     (
-        askCells
-        (
-            UIndirectList<label>(unheld_, asked)(),
-            askedPoint,
-            askedProc,
-            askedCell
-        )
+        askCells(askedBead, askedPoint, askedProc, askedCell)
     );
-    forAll(asked, j)
+    forAll(askedBead, j)
     {
-        if (found[j] >= 0)
+        const label i = askedBead[j];
+        if (found[j] >= 0 && (owner[i] < 0 || askedProc[j] < owner[i]))
         {
-            const label i = unheld_[asked[j]];
             owner[i] = askedProc[j];
             cell[i] = found[j];
         }
-    }
-
-    // The rest (new, or gone to another processor) from every processor
-    DynamicList<label> lost;
-    DynamicList<point> lostPoint;
-    forAll(unheld_, k)
-    {
-        if (owner[unheld_[k]] < 0)
-        {
-            lost.append(k);
-            lostPoint.append(unheldPoints_[k]);
-        }
-    }
-    if (returnReduce(lost.empty(), andOp<bool>()))
-    {
-        return;
-    }
-
-    labelList lostProc(pointOwners(mesh_, lostPoint));
-    DynamicList<label> located(lost.size());
-    forAll(lost, j)
-    {
-        if (lostProc[j] >= 0 && lostProc[j] != myProc)
-        {
-            located.append(j);
-        }
-    }
-    labelList lostBeads(located.size());
-    forAll(located, m)
-    {
-        lostBeads[m] = unheld_[lost[located[m]]];
-    }
-    const labelList lostCell
-    (
-        askCells
-        (
-            lostBeads,
-            UIndirectList<point>(lostPoint, located)(),
-            UIndirectList<label>(lostProc, located)(),
-            labelList(located.size(), -1)
-        )
-    );
-    forAll(located, m)
-    {
-        owner[lostBeads[m]] = lostProc[located[m]];
-        cell[lostBeads[m]] = lostCell[m];
     }
 }
 
@@ -348,7 +310,16 @@ void Foam::beadSampler::sample
                     << " values for the " << beads.size()
                     << " beads it located" << abort(FatalError);
             }
-            UIndirectList<vector>(values, beads) = v;
+            // A bead on the face between two processors' meshes is found
+            // by both: the value of the one holding it
+            const labelList& owner = remoteOwners_.cells();
+            forAll(beads, m)
+            {
+                if (owner[beads[m]] == proci)
+                {
+                    values[beads[m]] = v[m];
+                }
+            }
         }
     }
     exchangeSeconds_ += clock.elapsedTime();
