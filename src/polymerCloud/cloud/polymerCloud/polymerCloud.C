@@ -601,7 +601,7 @@ Foam::polymerCloud::polymerCloud
     groupedChains_(0),
     collisionBoxes_(),
     processorBounds_(),
-    referenceCells_(),
+    referenceCells_(-1),
     chainsOutgrowingBox_(0),
     evolveSeconds_(0),
     beadSteps_(0),

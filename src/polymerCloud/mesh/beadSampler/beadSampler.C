@@ -35,6 +35,39 @@ Foam::List<Foam::DynamicList<Foam::label>> byProcessor
     return requests;
 }
 
+// Tets as three label lists (cells, faces, tet points)
+void writeTets(Foam::Ostream& os, const Foam::UList<Foam::tetIndices>& tets)
+{
+    using namespace Foam;
+
+    labelList cells(tets.size());
+    labelList faces(tets.size());
+    labelList tetPts(tets.size());
+    forAll(tets, k)
+    {
+        cells[k] = tets[k].cell();
+        faces[k] = tets[k].face();
+        tetPts[k] = tets[k].tetPt();
+    }
+    os  << cells << faces << tetPts;
+}
+
+
+Foam::List<Foam::tetIndices> readTets(Foam::Istream& is)
+{
+    using namespace Foam;
+
+    const labelList cells(is);
+    const labelList faces(is);
+    const labelList tetPts(is);
+    List<tetIndices> tets(cells.size());
+    forAll(tets, k)
+    {
+        tets[k] = tetIndices(cells[k], faces[k], tetPts[k]);
+    }
+    return tets;
+}
+
 } // End anonymous namespace
 
 
@@ -45,12 +78,13 @@ Foam::beadSampler::beadSampler(const fvMesh& mesh)
     mesh_(mesh),
     locator_(cellLocator::New(mesh)),
     periodic_(periodicImages::New(mesh)),
-    hostCells_(),
-    remoteOwners_(),
-    remoteCells_(),
+    hostCells_(-1),
+    remoteOwners_(-1),
+    remoteCells_(-1),
+    remoteTets_(tetIndices()),
     unheld_(),
     unheldPoints_(),
-    hostTets_(),
+    hostTets_(tetIndices()),
     hostCoordinates_(),
     answeredTets_(Pstream::nProcs()),
     answeredCoordinates_(Pstream::nProcs()),
@@ -63,12 +97,12 @@ Foam::beadSampler::beadSampler(const fvMesh& mesh)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::labelList Foam::beadSampler::askCells
+Foam::List<Foam::tetIndices> Foam::beadSampler::askTets
 (
     const labelUList& beads,
     const UList<point>& points,
     const labelUList& proc,
-    const labelUList& startCell
+    const UList<tetIndices>& startTets
 )
 {
     const List<DynamicList<label>> asked(byProcessor(proc));
@@ -79,8 +113,12 @@ Foam::labelList Foam::beadSampler::askCells
         if (asked[proci].size())
         {
             UOPstream os(proci, requests);
-            os  << UIndirectList<point>(points, asked[proci])
-                << UIndirectList<label>(startCell, asked[proci]);
+            os  << UIndirectList<point>(points, asked[proci]);
+            writeTets
+            (
+                os,
+                UIndirectList<tetIndices>(startTets, asked[proci])()
+            );
         }
     }
     labelList recvSizes;
@@ -95,39 +133,38 @@ Foam::labelList Foam::beadSampler::askCells
         {
             UIPstream is(proci, requests);
             const pointField p(is);
-            labelList c(is);
+            List<tetIndices> tets(readTets(is));
             forAll(p, k)
             {
                 barycentric coordinates;
-                const tetIndices tet =
+                tets[k] =
                     bounds.contains(p[k])
-                  ? locator_.findTet(p[k], c[k], coordinates)
+                  ? locator_.findTet(p[k], tets[k], coordinates)
                   : tetIndices();
-                c[k] = tet.cell();
-                if (c[k] >= 0)
+                if (tets[k].cell() >= 0)
                 {
-                    answeredTets_[proci].append(tet);
+                    answeredTets_[proci].append(tets[k]);
                     answeredCoordinates_[proci].append(coordinates);
                 }
             }
             UOPstream os(proci, answers);
-            os  << c;
+            writeTets(os, tets);
         }
     }
     answers.finishedSends(recvSizes);
 
-    labelList found(points.size(), -1);
+    List<tetIndices> found(points.size());
     forAll(recvSizes, proci)
     {
         if (recvSizes[proci])
         {
             UIPstream is(proci, answers);
-            const labelList c(is);
-            forAll(c, k)
+            const List<tetIndices> tets(readTets(is));
+            forAll(tets, k)
             {
                 const label j = asked[proci][k];
-                found[j] = c[k];
-                if (c[k] >= 0)
+                found[j] = tets[k];
+                if (tets[k].cell() >= 0)
                 {
                     locatedBeads_[proci].append(beads[j]);
                 }
@@ -138,7 +175,12 @@ Foam::labelList Foam::beadSampler::askCells
 }
 
 
-void Foam::beadSampler::locateRemote(labelList& owner, labelList& cell)
+void Foam::beadSampler::locateRemote
+(
+    labelList& owner,
+    labelList& cell,
+    List<tetIndices>& tet
+)
 {
     if (processorBounds_.empty())
     {
@@ -150,13 +192,13 @@ void Foam::beadSampler::locateRemote(labelList& owner, labelList& cell)
 
     // Each unheld bead is asked of every other processor whose mesh's
     // bounding box holds it (no other mesh can), in one exchange: from the
-    // cell that held it when that processor did, by a tree search
+    // tet that held it when that processor did, by a tree search
     // otherwise. The lowest processor that finds it holds it.
     const label myProc = Pstream::myProcNo();
     DynamicList<label> askedBead(unheld_.size());
     DynamicList<point> askedPoint(unheld_.size());
     DynamicList<label> askedProc(unheld_.size());
-    DynamicList<label> askedCell(unheld_.size());
+    DynamicList<tetIndices> askedTet(unheld_.size());
     forAll(unheld_, k)
     {
         const label i = unheld_[k];
@@ -168,24 +210,26 @@ void Foam::beadSampler::locateRemote(labelList& owner, labelList& cell)
                 askedBead.append(i);
                 askedPoint.append(p);
                 askedProc.append(proci);
-                askedCell.append(proci == owner[i] ? cell[i] : -1);
+                askedTet.append(proci == owner[i] ? tet[i] : tetIndices());
             }
         }
         owner[i] = -1;
         cell[i] = -1;
     }
 
-    const labelList found
+    const List<tetIndices> found
     (
-        askCells(askedBead, askedPoint, askedProc, askedCell)
+        askTets(askedBead, askedPoint, askedProc, askedTet)
     );
     forAll(askedBead, j)
     {
         const label i = askedBead[j];
-        if (found[j] >= 0 && (owner[i] < 0 || askedProc[j] < owner[i]))
+        const label celli = found[j].cell();
+        if (celli >= 0 && (owner[i] < 0 || askedProc[j] < owner[i]))
         {
             owner[i] = askedProc[j];
-            cell[i] = found[j];
+            cell[i] = celli;
+            tet[i] = found[j];
         }
     }
 }
@@ -199,10 +243,11 @@ void Foam::beadSampler::locate(const polymerChains& chains)
     labelList& hostCell = hostCells_.update(chains);
     labelList& owner = remoteOwners_.update(chains);
     labelList& cell = remoteCells_.update(chains);
+    List<tetIndices>& hostTet = hostTets_.update(chains);
+    List<tetIndices>& remoteTet = remoteTets_.update(chains);
 
     unheld_.clear();
     unheldPoints_.clear();
-    hostTets_.setSize(x.size());
     hostCoordinates_.setSize(x.size());
     forAll(answeredTets_, proci)
     {
@@ -212,21 +257,17 @@ void Foam::beadSampler::locate(const polymerChains& chains)
     }
 
     // A bead outside this processor's bounding box is in another's mesh,
-    // or in none: no search here. The tets of the last locate are tried
-    // first, as hints only: beads that came or went since shift the others
+    // or in none: no search here. The search starts from the tet that
+    // held the bead at the last locate
     const boundBox& bounds = mesh_.bounds();
     forAll(x, i)
     {
         const point p = periodic_.wrap(x[i]);
-        const tetIndices previous =
-            (hostTets_[i].cell() == hostCell[i])
-          ? hostTets_[i]
-          : tetIndices(hostCell[i], -1, -1);
-        hostTets_[i] =
+        hostTet[i] =
             bounds.contains(p)
-          ? locator_.findTet(p, previous, hostCoordinates_[i])
+          ? locator_.findTet(p, hostTet[i], hostCoordinates_[i])
           : tetIndices();
-        hostCell[i] = hostTets_[i].cell();
+        hostCell[i] = hostTet[i].cell();
         if (hostCell[i] < 0)
         {
             unheld_.append(i);
@@ -242,7 +283,7 @@ void Foam::beadSampler::locate(const polymerChains& chains)
     if (Pstream::parRun())
     {
         clockTime clock;
-        locateRemote(owner, cell);
+        locateRemote(owner, cell, remoteTet);
         exchangeSeconds_ += clock.elapsedTime();
     }
 
@@ -260,11 +301,12 @@ void Foam::beadSampler::sample
     UList<vector>& values
 ) const
 {
-    forAll(hostTets_, i)
+    const List<tetIndices>& hostTet = hostTets_.values();
+    forAll(hostTet, i)
     {
         values[i] =
-            (hostTets_[i].cell() >= 0)
-          ? field.interpolate(hostCoordinates_[i], hostTets_[i])
+            (hostTet[i].cell() >= 0)
+          ? field.interpolate(hostCoordinates_[i], hostTet[i])
           : Zero;
     }
 
@@ -312,7 +354,7 @@ void Foam::beadSampler::sample
             }
             // A bead on the face between two processors' meshes is found
             // by both: the value of the one holding it
-            const labelList& owner = remoteOwners_.cells();
+            const labelList& owner = remoteOwners_.values();
             forAll(beads, m)
             {
                 if (owner[beads[m]] == proci)

@@ -23,7 +23,7 @@ void Foam::beadSampler::addToCells
     Field<Type>& cellValues
 ) const
 {
-    const labelList& hostCell = hostCells_.cells();
+    const labelList& hostCell = hostCells_.values();
     forAll(values, i)
     {
         if (hostCell[i] >= 0)
@@ -39,8 +39,8 @@ void Foam::beadSampler::addToCells
 
     // The unheld beads' values to the processors holding them
     clockTime clock;
-    const labelList& owner = remoteOwners_.cells();
-    const labelList& cell = remoteCells_.cells();
+    const labelList& owner = remoteOwners_.values();
+    const labelList& cell = remoteCells_.values();
     List<DynamicList<label>> cells(Pstream::nProcs());
     List<DynamicList<Type>> sent(Pstream::nProcs());
     for (const label i : unheld_)

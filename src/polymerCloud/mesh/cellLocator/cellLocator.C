@@ -80,6 +80,30 @@ bool Foam::cellLocator::inTet
 }
 
 
+bool Foam::cellLocator::isTetOf
+(
+    const polyMesh& mesh,
+    const tetIndices& tet,
+    const label celli
+)
+{
+    const label facei = tet.face();
+    return
+        tet.cell() == celli
+     && facei >= 0
+     && facei < mesh.nFaces()
+     && (
+            mesh.faceOwner()[facei] == celli
+         || (
+                mesh.isInternalFace(facei)
+             && mesh.faceNeighbour()[facei] == celli
+            )
+        )
+     && tet.tetPt() >= 1
+     && tet.tetPt() <= mesh.faces()[facei].size() - 2;
+}
+
+
 bool Foam::cellLocator::inTets
 (
     const polyMesh& mesh,
@@ -90,9 +114,9 @@ bool Foam::cellLocator::inTets
 )
 {
     // A tet of this cell given in tet first: a bead a step later is most
-    // often still in the tet that held it
+    // often still in the tet that held it (a hint only: it may be stale)
     const tetIndices first(tet);
-    const bool hasFirst = (first.cell() == celli && first.face() >= 0);
+    const bool hasFirst = isTetOf(mesh, first, celli);
     if (hasFirst && inTet(mesh, p, first, coordinates))
     {
         return true;

@@ -10,13 +10,15 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "beadCells.H"
+#include "beadData.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::beadCells::beadCells()
+template<class Type>
+Foam::beadData<Type>::beadData(const Type& unknown)
 :
-    cells_(),
+    unknown_(unknown),
+    values_(),
     start_(),
     layout_(-1)
 {}
@@ -24,14 +26,19 @@ Foam::beadCells::beadCells()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::labelList& Foam::beadCells::update(const polymerChains& chains)
+template<class Type>
+Foam::List<Type>& Foam::beadData<Type>::update(const polymerChains& chains)
 {
-    if (layout_ == chains.layoutVersion() && cells_.size() == chains.nBeads())
+    if
+    (
+        layout_ == chains.layoutVersion()
+     && values_.size() == chains.nBeads()
+    )
     {
-        return cells_;
+        return values_;
     }
 
-    labelList cells(chains.nBeads(), -1);
+    List<Type> values(chains.nBeads(), unknown_);
     Map<label> start(2*chains.nChains());
     for (label c = 0; c < chains.nChains(); ++c)
     {
@@ -43,15 +50,15 @@ Foam::labelList& Foam::beadCells::update(const polymerChains& chains)
         {
             for (label k = 0; k < chains.size(c); ++k)
             {
-                cells[chains.start(c) + k] = cells_[old.val() + k];
+                values[chains.start(c) + k] = values_[old.val() + k];
             }
         }
     }
 
-    cells_.transfer(cells);
+    values_.transfer(values);
     start_.transfer(start);
     layout_ = chains.layoutVersion();
-    return cells_;
+    return values_;
 }
 
 
