@@ -78,9 +78,7 @@ Foam::beadSampler::beadSampler(const fvMesh& mesh)
     mesh_(mesh),
     locator_(cellLocator::New(mesh)),
     periodic_(periodicImages::New(mesh)),
-    hostCells_(-1),
     remoteOwners_(-1),
-    remoteCells_(-1),
     remoteTets_(tetIndices()),
     unheld_(),
     unheldPoints_(),
@@ -178,7 +176,6 @@ Foam::List<Foam::tetIndices> Foam::beadSampler::askTets
 void Foam::beadSampler::locateRemote
 (
     labelList& owner,
-    labelList& cell,
     List<tetIndices>& tet
 )
 {
@@ -214,7 +211,7 @@ void Foam::beadSampler::locateRemote
             }
         }
         owner[i] = -1;
-        cell[i] = -1;
+        tet[i] = tetIndices();
     }
 
     const List<tetIndices> found
@@ -224,11 +221,13 @@ void Foam::beadSampler::locateRemote
     forAll(askedBead, j)
     {
         const label i = askedBead[j];
-        const label celli = found[j].cell();
-        if (celli >= 0 && (owner[i] < 0 || askedProc[j] < owner[i]))
+        if
+        (
+            found[j].cell() >= 0
+         && (owner[i] < 0 || askedProc[j] < owner[i])
+        )
         {
             owner[i] = askedProc[j];
-            cell[i] = celli;
             tet[i] = found[j];
         }
     }
@@ -240,10 +239,8 @@ void Foam::beadSampler::locateRemote
 void Foam::beadSampler::locate(const polymerChains& chains)
 {
     const List<vector>& x = chains.positions();
-    labelList& hostCell = hostCells_.update(chains);
-    labelList& owner = remoteOwners_.update(chains);
-    labelList& cell = remoteCells_.update(chains);
     List<tetIndices>& hostTet = hostTets_.update(chains);
+    labelList& owner = remoteOwners_.update(chains);
     List<tetIndices>& remoteTet = remoteTets_.update(chains);
 
     unheld_.clear();
@@ -267,8 +264,7 @@ void Foam::beadSampler::locate(const polymerChains& chains)
             bounds.contains(p)
           ? locator_.findTet(p, hostTet[i], hostCoordinates_[i])
           : tetIndices();
-        hostCell[i] = hostTet[i].cell();
-        if (hostCell[i] < 0)
+        if (hostTet[i].cell() < 0)
         {
             unheld_.append(i);
             unheldPoints_.append(p);
@@ -276,14 +272,14 @@ void Foam::beadSampler::locate(const polymerChains& chains)
         else
         {
             owner[i] = -1;
-            cell[i] = -1;
+            remoteTet[i] = tetIndices();
         }
     }
 
     if (Pstream::parRun())
     {
         clockTime clock;
-        locateRemote(owner, cell, remoteTet);
+        locateRemote(owner, remoteTet);
         exchangeSeconds_ += clock.elapsedTime();
     }
 

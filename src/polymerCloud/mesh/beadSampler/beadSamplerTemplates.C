@@ -23,12 +23,12 @@ void Foam::beadSampler::addToCells
     Field<Type>& cellValues
 ) const
 {
-    const labelList& hostCell = hostCells_.values();
+    const List<tetIndices>& hostTet = hostTets_.values();
     forAll(values, i)
     {
-        if (hostCell[i] >= 0)
+        if (hostTet[i].cell() >= 0)
         {
-            cellValues[hostCell[i]] += values[i];
+            cellValues[hostTet[i].cell()] += values[i];
         }
     }
 
@@ -40,14 +40,14 @@ void Foam::beadSampler::addToCells
     // The unheld beads' values to the processors holding them
     clockTime clock;
     const labelList& owner = remoteOwners_.values();
-    const labelList& cell = remoteCells_.values();
+    const List<tetIndices>& tet = remoteTets_.values();
     List<DynamicList<label>> cells(Pstream::nProcs());
     List<DynamicList<Type>> sent(Pstream::nProcs());
     for (const label i : unheld_)
     {
         if (owner[i] >= 0)
         {
-            cells[owner[i]].append(cell[i]);
+            cells[owner[i]].append(tet[i].cell());
             sent[owner[i]].append(values[i]);
         }
     }

@@ -215,13 +215,16 @@ void Foam::flowModels::fieldFlow::depositMomentum
                 transfer += force[i]*deltaT;
             }
 
-            const label celli = sampler_.hostCells()[i];
+            const label celli = sampler_.hostTets()[i].cell();
             if (celli < 0)
             {
                 const label proci = sampler_.remoteOwners()[i];
                 if (proci >= 0)
                 {
-                    remoteCell[proci].append(sampler_.remoteCells()[i]);
+                    remoteCell[proci].append
+                    (
+                        sampler_.remoteTets()[i].cell()
+                    );
                     remoteTransfer[proci].append(transfer);
                     remoteCoeff[proci].append(coeff);
                 }
