@@ -151,7 +151,11 @@ void Foam::polymerCloud::initialise()
     initialisation->create(chains_, seed_);
 
     checkRods(properties_.dictionary::name()/"subModels"/"initialisation");
-    if (flow_->solvesFlow() || wall_->active())
+    if
+    (
+        (flow_->solvesFlow() || wall_->active())
+     && !initialisation->placesInsideMesh()
+    )
     {
         checkInsideMesh(properties_.dictionary::name()/"subModels");
     }
