@@ -102,6 +102,25 @@ Foam::List<Foam::point> Foam::initialisationModels::randomWalk::walk
 
 
 Foam::List<Foam::List<Foam::point>>
+Foam::initialisationModels::randomWalk::walks
+(
+    const chainType& type,
+    const boundBox& box,
+    const label seed,
+    const label firstId,
+    const label nChains
+)
+{
+    List<List<point>> x(nChains);
+    forAll(x, n)
+    {
+        x[n] = walk(type, box, seed, firstId + n, 0);
+    }
+    return x;
+}
+
+
+Foam::List<Foam::List<Foam::point>>
 Foam::initialisationModels::randomWalk::walksInside
 (
     const chainType& type,
@@ -113,11 +132,7 @@ Foam::initialisationModels::randomWalk::walksInside
     const dictionary& dict
 )
 {
-    List<List<point>> x(nChains);
-    forAll(x, n)
-    {
-        x[n] = walk(type, box, seed, firstId + n, 0);
-    }
+    List<List<point>> x(walks(type, box, seed, firstId, nChains));
 
     // The beads' images inside the cyclic patches are what must be in
     // the mesh
@@ -208,22 +223,12 @@ void Foam::initialisationModels::randomWalk::create
         );
 
         const label firstId = chains.nChains();
-        List<List<point>> x;
-        if (insideMesh_)
-        {
-            x = walksInside
-            (
-                type, box_, seed, firstId, number, mesh_, coeffDict_
-            );
-        }
-        else
-        {
-            x.setSize(number);
-            forAll(x, n)
-            {
-                x[n] = walk(type, box_, seed, firstId + n, 0);
-            }
-        }
+        const List<List<point>> x
+        (
+            insideMesh_
+          ? walksInside(type, box_, seed, firstId, number, mesh_, coeffDict_)
+          : walks(type, box_, seed, firstId, number)
+        );
 
         forAll(x, n)
         {
