@@ -117,6 +117,38 @@ void Foam::polymerChains::remove(const labelUList& chainIndices)
 }
 
 
+void Foam::polymerChains::reorder(const labelUList& newToOld)
+{
+    ++layoutVersion_;
+    List<vector> positions(positions_.size());
+    List<vector> velocities(velocities_.size());
+    labelList typeIndex(nChains());
+    labelList globalId(nChains());
+    labelList chainStart(nChains() + 1);
+
+    label nBeadsDone = 0;
+    forAll(newToOld, c)
+    {
+        const label old = newToOld[c];
+        chainStart[c] = nBeadsDone;
+        for (label i = start(old); i < end(old); ++i, ++nBeadsDone)
+        {
+            positions[nBeadsDone] = positions_[i];
+            velocities[nBeadsDone] = velocities_[i];
+        }
+        typeIndex[c] = chainTypeIndex_[old];
+        globalId[c] = globalChainId_[old];
+    }
+    chainStart[nChains()] = nBeadsDone;
+
+    positions_.transfer(positions);
+    velocities_.transfer(velocities);
+    chainTypeIndex_.transfer(typeIndex);
+    globalChainId_.transfer(globalId);
+    chainStart_.transfer(chainStart);
+}
+
+
 void Foam::polymerChains::clear()
 {
     ++layoutVersion_;

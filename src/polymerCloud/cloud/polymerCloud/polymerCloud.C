@@ -21,6 +21,8 @@ License
 #include "cpuTime.H"
 #include "HashTable.H"
 #include "pointOwners.H"
+#include "cellLocator.H"
+#include <algorithm>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -369,6 +371,78 @@ void Foam::polymerCloud::wrapChains()
 }
 
 
+bool Foam::polymerCloud::sortsChains() const
+{
+    return flow_->solvesFlow() || wall_->active();
+}
+
+
+void Foam::polymerCloud::locateReferenceBeads()
+{
+    if (!sortsChains() && !Pstream::parRun())
+    {
+        return;
+    }
+
+    const cellLocator& locator = cellLocator::New(mesh_);
+    const boundBox& bounds = mesh_.bounds();
+    const List<vector>& x = chains_.positions();
+    labelList& cell = referenceCells_.update(chains_);
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const label i = referenceBead(c);
+        const point p = periodic_.wrap(x[i]);
+        cell[i] = bounds.contains(p) ? locator.findCell(p, cell[i]) : -1;
+    }
+}
+
+
+void Foam::polymerCloud::sortChains()
+{
+    if (!sortsChains())
+    {
+        return;
+    }
+
+    // Chains that arrived from other processors are not located yet
+    const cellLocator& locator = cellLocator::New(mesh_);
+    const List<vector>& x = chains_.positions();
+    labelList& cell = referenceCells_.update(chains_);
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const label i = referenceBead(c);
+        if (cell[i] < 0)
+        {
+            cell[i] = locator.findCell(periodic_.wrap(x[i]));
+        }
+    }
+
+    // By cell (those outside this processor's mesh last), then by global
+    // id, so that the order does not depend on the chains' history
+    const label nCells = mesh_.nCells();
+    auto key = [&](const label c)
+    {
+        const label celli = cell[referenceBead(c)];
+        return std::make_pair
+        (
+            celli < 0 ? nCells : celli,
+            chains_.globalId(c)
+        );
+    };
+    auto before = [&](const label a, const label b)
+    {
+        return key(a) < key(b);
+    };
+
+    labelList order(identity(chains_.nChains()));
+    if (!std::is_sorted(order.cbegin(), order.cend(), before))
+    {
+        std::sort(order.begin(), order.end(), before);
+        chains_.reorder(order);
+    }
+}
+
+
 void Foam::polymerCloud::integrateChains(const scalar deltaT)
 {
     integration_->integrate
@@ -707,6 +781,8 @@ Foam::polymerCloud::polymerCloud
             << endl;
     }
 
+    sortChains();
+
     label largestId = -1;
     for (label c = 0; c < chains_.nChains(); ++c)
     {
@@ -826,7 +902,9 @@ void Foam::polymerCloud::evolve()
     totalWall_.add(wall_->count());
     wall_->resetCounters();
     wrapChains();
+    locateReferenceBeads();
     distributeChains();
+    sortChains();
 
     evolveSeconds_ += timer.cpuTimeIncrement();
     beadSteps_ += chains_.nBeads();

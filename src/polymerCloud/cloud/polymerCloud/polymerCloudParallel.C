@@ -181,23 +181,16 @@ void Foam::polymerCloud::distributeChains()
     // Chains whose reference bead this processor's mesh does not hold go
     // to the processor that holds it; one that no processor holds (outside
     // the mesh) stays where it is
-    const cellLocator& locator = cellLocator::New(mesh_);
-    labelList& cell = referenceCells_.update(chains_);
-    const boundBox& bounds = mesh_.bounds();
+    const labelList& cell = referenceCells_.values();
     DynamicList<label> leaving;
     DynamicList<point> leavingPoints;
     for (label c = 0; c < chains_.nChains(); ++c)
     {
         const label i = referenceBead(c);
-        const point p = periodic_.wrap(x[i]);
-        cell[i] =
-            bounds.contains(p)
-          ? locator.findCell(p, cell[i])
-          : -1;
         if (cell[i] < 0)
         {
             leaving.append(c);
-            leavingPoints.append(p);
+            leavingPoints.append(periodic_.wrap(x[i]));
         }
     }
     if (returnReduce(leaving.empty(), andOp<bool>()))
