@@ -377,7 +377,7 @@ bool Foam::polymerCloud::sortsChains() const
 }
 
 
-void Foam::polymerCloud::locateReferenceBeads()
+void Foam::polymerCloud::locateReferenceBeads(const bool unknownOnly)
 {
     if (!sortsChains() && !Pstream::parRun())
     {
@@ -391,6 +391,10 @@ void Foam::polymerCloud::locateReferenceBeads()
     for (label c = 0; c < chains_.nChains(); ++c)
     {
         const label i = referenceBead(c);
+        if (unknownOnly && cell[i] >= 0)
+        {
+            continue;
+        }
         const point p = periodic_.wrap(x[i]);
         cell[i] = bounds.contains(p) ? locator.findCell(p, cell[i]) : -1;
     }
@@ -405,17 +409,8 @@ void Foam::polymerCloud::sortChains()
     }
 
     // Chains that arrived from other processors are not located yet
-    const cellLocator& locator = cellLocator::New(mesh_);
-    const List<vector>& x = chains_.positions();
-    labelList& cell = referenceCells_.update(chains_);
-    for (label c = 0; c < chains_.nChains(); ++c)
-    {
-        const label i = referenceBead(c);
-        if (cell[i] < 0)
-        {
-            cell[i] = locator.findCell(periodic_.wrap(x[i]));
-        }
-    }
+    locateReferenceBeads(true);
+    const labelList& cell = referenceCells_.values();
 
     // By cell (those outside this processor's mesh last), then by global
     // id, so that the order does not depend on the chains' history
