@@ -318,12 +318,12 @@ int main(int argc, char *argv[])
         }
     }
 
-    Info<< "Constraint solves: " << cloud.totalCounters().solves
+    Info<< "Constraint solves: " << cloud.constraint().totalCount().solves
         << ", iterations per solve "
-        << scalar(cloud.totalCounters().iterations)
-          /max(cloud.totalCounters().solves, label(1))
-        << ", failures " << cloud.totalCounters().failures
-        << ", sub-stepped chains " << cloud.totalCounters().subStepped
+        << scalar(cloud.constraint().totalCount().iterations)
+          /max(cloud.constraint().totalCount().solves, label(1))
+        << ", failures " << cloud.constraint().totalCount().failures
+        << ", sub-stepped chains " << cloud.constraint().totalCount().subStepped
         << ", final rod error " << chains.maxRodLengthError() << nl << endl;
 
     double m, se;
@@ -332,12 +332,12 @@ int main(int argc, char *argv[])
     (
         "%s %s.rods: max rod error %.3g (<= 1e-9), constraint failures %d\n",
         (chains.maxRodLengthError() <= 1e-9
-      && cloud.totalCounters().failures == 0) ? "PASS" : "FAIL",
+      && cloud.constraint().totalCount().failures == 0) ? "PASS" : "FAIL",
         name.c_str(), chains.maxRodLengthError(),
-        int(cloud.totalCounters().failures)
+        int(cloud.constraint().totalCount().failures)
     );
     if (!(chains.maxRodLengthError() <= 1e-9
-      && cloud.totalCounters().failures == 0)) ++nFailedChecks();
+      && cloud.constraint().totalCount().failures == 0)) ++nFailedChecks();
 
     if (N == 3 && fixman)
     {

@@ -251,11 +251,24 @@ void Foam::polymerCloud::checkInsideMesh(const fileName& origin) const
 }
 
 
-void Foam::polymerCloud::accumulateCounters()
+void Foam::polymerCloud::attachModels()
 {
-    intervalCounters_.add(constraint_->count());
-    totalCounters_.add(constraint_->count());
-    constraint_->resetCounters();
+    models_.clear();
+    models_.append(flow_.get());
+    for (forceModel& model : forces_)
+    {
+        models_.append(&model);
+    }
+    models_.append(integration_.get());
+    models_.append(constraint_.get());
+    models_.append(collision_.get());
+    models_.append(wall_.get());
+    models_.append(injection_.get());
+
+    for (polymerSubModel& model : models_)
+    {
+        model.attach(*this);
+    }
 }
 
 
@@ -663,11 +676,6 @@ Foam::polymerCloud::polymerCloud
     nextChainId_(0),
     nInjected_(0),
     functions_(),
-    intervalCounters_(),
-    totalCounters_(),
-    intervalCollisions_(),
-    totalCollisions_(),
-    totalWall_(),
     periodicCrossings_(0),
     migrations_(0),
     migrationSeconds_(0),
@@ -710,6 +718,7 @@ Foam::polymerCloud::polymerCloud
     collision_->setLattice(periodic_.lattice());
     wall_ = wallModel::New(subModels, mesh_);
     injection_ = injectionModel::New(subModels, mesh_);
+    attachModels();
 
     if (wall_->rejects() && collision_->type() != "none")
     {
@@ -862,7 +871,6 @@ void Foam::polymerCloud::evolve()
     {
         subStepChain(c, deltaT);
     }
-    accumulateCounters();
 
     for (polymerCloudFunction& function : functions_)
     {
@@ -889,13 +897,12 @@ void Foam::polymerCloud::evolve()
     groupCollidingChains();
     collision_->correct(chains_, positionsOld_, deltaT, time, wall_.get());
     checkCollisionBoxes();
-    intervalCollisions_.add(collision_->count());
-    totalCollisions_.add(collision_->count());
-    collision_->resetCounters();
     rejectChains();
     removeEscapedChains();
-    totalWall_.add(wall_->count());
-    wall_->resetCounters();
+    for (polymerSubModel& model : models_)
+    {
+        model.endStep();
+    }
     wrapChains();
     locateReferenceBeads();
     distributeChains();
@@ -946,6 +953,15 @@ void Foam::polymerCloud::predictCoupling()
 
     chains_.positions() = positionsOld_;
     chains_.velocities() = velocitiesOld_;
+}
+
+
+void Foam::polymerCloud::resetIntervalCounters() const
+{
+    for (const polymerSubModel& model : models_)
+    {
+        model.resetInterval();
+    }
 }
 
 
@@ -1029,9 +1045,6 @@ void Foam::polymerCloud::writeProcessorLoads(Ostream& os) const
 void Foam::polymerCloud::writeReport(Ostream& os) const
 {
     const scalar seconds = returnReduce(evolveSeconds_, maxOp<scalar>());
-    const constraintCounters constraints = totalCounters_.reduced();
-    const collisionCounters collisions = totalCollisions_.reduced();
-    const wallCounters walls = totalWall_.reduced();
     const scalar beadSteps = returnReduce(beadSteps_, sumOp<scalar>());
 
     os  << name() << ": " << beadSteps << " bead-steps in " << seconds
@@ -1040,23 +1053,12 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
     {
         os  << ", " << beadSteps/seconds << " bead-steps/s";
     }
-    os  << nl
-        << "    constraint solves " << constraints.solves
-        << ", iterations per solve "
-        << scalar(constraints.iterations)/max(constraints.solves, 1)
-        << " (max " << constraints.maxIterations << ")"
-        << ", failures " << constraints.failures
-        << ", chains sub-stepped " << constraints.subStepped << nl
-        << "    rod-rod collisions " << collisions.events
-        << " (max per step " << collisions.maxEventsPerStep
-        << "), event-loop stalls " << collisions.stalls
-        << ", crossing-time solves " << collisions.pairChecks
-        << ", audited crossings " << collisions.auditCrossings << nl
-        << "    bead-wall rebounds " << walls.rebounds
-        << ", chains that left the domain " << walls.escapedChains
-        << " (" << walls.escapedBeads << " beads)"
-        << ", beads stuck " << walls.stuck
-        << ", chain steps rejected " << walls.rejectedSteps << nl
+    os  << nl;
+    for (const polymerSubModel& model : models_)
+    {
+        model.writeReport(os);
+    }
+    os
         << "    chains injected " << returnReduce(nInjected_, sumOp<label>())
         << ", chains carried across cyclic patches "
         << returnReduce(periodicCrossings_, sumOp<label>())

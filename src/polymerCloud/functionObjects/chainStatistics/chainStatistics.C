@@ -160,16 +160,15 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
     reduce(dofKT, sumOp<scalar>());
     reduce(rodError, maxOp<scalar>());
 
-    const polymerCloud::constraintCounters interval =
-        cloud_.intervalCounters().reduced();
-    const polymerCloud::constraintCounters total =
-        cloud_.totalCounters().reduced();
-    const polymerCloud::collisionCounters intervalCollisions =
-        cloud_.intervalCollisions().reduced();
-    const polymerCloud::collisionCounters totalCollisions =
-        cloud_.totalCollisions().reduced();
-    const polymerCloud::wallCounters totalWall =
-        cloud_.totalWall().reduced();
+    const constraintCounters interval =
+        cloud_.constraint().intervalCount().reduced();
+    const constraintCounters total =
+        cloud_.constraint().totalCount().reduced();
+    const collisionCounters intervalCollisions =
+        cloud_.collision().intervalCount().reduced();
+    const collisionCounters totalCollisions =
+        cloud_.collision().totalCount().reduced();
+    const wallCounters totalWall = cloud_.wall().totalCount().reduced();
     const label nOutside = cloud_.nBeadsOutside();
     const label nRodsOutside = returnReduce(rodsOutside(), sumOp<label>());
 

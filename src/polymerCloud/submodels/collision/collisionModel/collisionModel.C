@@ -29,9 +29,22 @@ Foam::collisionModel::collisionModel
     const dictionary& dict
 )
 :
-    coeffDict_(dict.optionalSubDict(type + "Coeffs")),
-    counters_()
+    countedSubModel<collisionCounters>(type, dict)
 {}
+
+
+// * * * * * * * * * * * * * * * * * Report  * * * * * * * * * * * * * * * * //
+
+void Foam::collisionModel::writeReport(Ostream& os) const
+{
+    const collisionCounters total = totalCounters_.reduced();
+
+    os  << "    rod-rod collisions " << total.events
+        << " (max per step " << total.maxEventsPerStep
+        << "), event-loop stalls " << total.stalls
+        << ", crossing-time solves " << total.pairChecks
+        << ", audited crossings " << total.auditCrossings << nl;
+}
 
 
 // ************************************************************************* //

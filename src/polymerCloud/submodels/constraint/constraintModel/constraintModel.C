@@ -37,8 +37,7 @@ Foam::constraintModel::constraintModel
     const dictionary& dict
 )
 :
-    coeffDict_(dict.optionalSubDict(type + "Coeffs")),
-    counters_(),
+    countedSubModel<constraintCounters>(type, dict),
     failureAction_
     (
         failureActionNames.getOrDefault
@@ -204,6 +203,21 @@ void Foam::constraintModel::correctVelocities
             reportFailure(chains, c, "Rod-velocity", time, residual, -iter);
         }
     }
+}
+
+
+// * * * * * * * * * * * * * * * * * Report  * * * * * * * * * * * * * * * * //
+
+void Foam::constraintModel::writeReport(Ostream& os) const
+{
+    const constraintCounters total = totalCounters_.reduced();
+
+    os  << "    constraint solves " << total.solves
+        << ", iterations per solve "
+        << scalar(total.iterations)/max(total.solves, 1)
+        << " (max " << total.maxIterations << ")"
+        << ", failures " << total.failures
+        << ", chains sub-stepped " << total.subStepped << nl;
 }
 
 

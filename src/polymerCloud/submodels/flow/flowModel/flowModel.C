@@ -30,7 +30,7 @@ Foam::flowModel::flowModel
     const fvMesh& mesh
 )
 :
-    coeffDict_(dict.optionalSubDict(type + "Coeffs")),
+    polymerSubModel(type, dict),
     mesh_(mesh),
     beadVelocity_()
 {}

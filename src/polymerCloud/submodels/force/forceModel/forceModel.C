@@ -29,7 +29,7 @@ Foam::forceModel::forceModel
     const dictionary& dict
 )
 :
-    coeffDict_(dict.optionalSubDict(type + "Coeffs"))
+    polymerSubModel(type, dict)
 {}
 
 

@@ -31,14 +31,11 @@ Foam::initialisationModel::initialisationModel
     const fvMesh& mesh
 )
 :
-    coeffDict_
+    polymerSubModel
     (
-        checkedInput::subDict
-        (
-            dict,
-            type + "Coeffs",
-            "the " + type + " initialisation's settings"
-        )
+        type,
+        dict,
+        "the " + type + " initialisation's settings"
     ),
     mesh_(mesh)
 {}

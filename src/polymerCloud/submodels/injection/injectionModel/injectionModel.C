@@ -30,7 +30,7 @@ Foam::injectionModel::injectionModel
     const fvMesh& mesh
 )
 :
-    coeffDict_(dict.optionalSubDict(type + "Coeffs")),
+    polymerSubModel(type, dict),
     mesh_(mesh)
 {}
 

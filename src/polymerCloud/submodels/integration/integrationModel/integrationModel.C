@@ -29,7 +29,7 @@ Foam::integrationModel::integrationModel
     const dictionary& dict
 )
 :
-    coeffDict_(dict.optionalSubDict(type + "Coeffs"))
+    polymerSubModel(type, dict)
 {}
 
 

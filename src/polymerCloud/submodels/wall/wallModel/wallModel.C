@@ -41,13 +41,12 @@ Foam::wallModel::wallModel
     const fvMesh& mesh
 )
 :
-    coeffDict_(dict.optionalSubDict(type + "Coeffs")),
+    countedSubModel<wallCounters>(type, dict),
     mesh_(mesh),
     periodic_(periodicImages::New(mesh)),
     interaction_(mesh.boundaryMesh().size(), interactionType::escape),
     escapedBeads_(),
     rejectedBeads_(),
-    counters_(),
     faces_()
 {
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
@@ -250,6 +249,20 @@ void Foam::wallModel::correct
 
         x[i] = position + (deltaT - t)*v;
     }
+}
+
+
+// * * * * * * * * * * * * * * * * * Report  * * * * * * * * * * * * * * * * //
+
+void Foam::wallModel::writeReport(Ostream& os) const
+{
+    const wallCounters total = totalCounters_.reduced();
+
+    os  << "    bead-wall rebounds " << total.rebounds
+        << ", chains that left the domain " << total.escapedChains
+        << " (" << total.escapedBeads << " beads)"
+        << ", beads stuck " << total.stuck
+        << ", chain steps rejected " << total.rejectedSteps << nl;
 }
 
 

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "crossingRootSolver.H"
+#include "polymerSubModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -77,20 +78,10 @@ Foam::autoPtr<Foam::crossingRootSolver> Foam::crossingRootSolver::New
     const dictionary& dict
 )
 {
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(solverType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "rootSolver",
-            solverType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return autoPtr<crossingRootSolver>(cstrIter()());
+    return polymerSubModel::selectNamed<crossingRootSolver>
+    (
+        solverType, dict, "rootSolver"
+    );
 }
 
 

@@ -10,36 +10,56 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "integrationModel.H"
 #include "checkedInput.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::integrationModel>
-Foam::integrationModel::New(const dictionary& dict)
+template<class Model, class... Args>
+Foam::autoPtr<Model> Foam::polymerSubModel::select
+(
+    const dictionary& dict,
+    const word& keyword,
+    Args&&... args
+)
 {
     const word modelType
     (
         checkedInput::modelType
         (
-            dict, "integration", dictionaryConstructorTablePtr_->sortedToc()
+            dict, keyword, Model::dictionaryConstructorTablePtr_->sortedToc()
         )
     );
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+    return selectNamed<Model>
+    (
+        modelType, dict, keyword, std::forward<Args>(args)...
+    );
+}
+
+
+template<class Model, class... Args>
+Foam::autoPtr<Model> Foam::polymerSubModel::selectNamed
+(
+    const word& modelType,
+    const dictionary& dict,
+    const word& keyword,
+    Args&&... args
+)
+{
+    auto cstrIter = Model::dictionaryConstructorTablePtr_->cfind(modelType);
 
     if (!cstrIter.found())
     {
         FatalIOErrorInLookup
         (
             dict,
-            "integration",
+            keyword,
             modelType,
-            *dictionaryConstructorTablePtr_
+            *Model::dictionaryConstructorTablePtr_
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<integrationModel>(cstrIter()(dict));
+    return autoPtr<Model>(cstrIter()(std::forward<Args>(args)...));
 }
 
 

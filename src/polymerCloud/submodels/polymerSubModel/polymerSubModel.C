@@ -1,0 +1,69 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "polymerSubModel.H"
+#include "checkedInput.H"
+#include "error.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+const Foam::dictionary& coefficients
+(
+    const Foam::word& modelType,
+    const Foam::dictionary& dict,
+    const Foam::string& requiredCoeffs
+)
+{
+    const Foam::word keyword(modelType + "Coeffs");
+    if (!requiredCoeffs.empty())
+    {
+        return Foam::checkedInput::subDict(dict, keyword, requiredCoeffs);
+    }
+    return dict.optionalSubDict(keyword);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::polymerSubModel::polymerSubModel
+(
+    const word& modelType,
+    const dictionary& dict,
+    const string& requiredCoeffs
+)
+:
+    owner_(nullptr),
+    modelType_(modelType),
+    coeffDict_(coefficients(modelType, dict, requiredCoeffs))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::polymerCloud& Foam::polymerSubModel::owner() const
+{
+    if (!owner_)
+    {
+        FatalErrorInFunction
+            << "The " << modelType_ << " model is not attached to a cloud"
+            << exit(FatalError);
+    }
+    return *owner_;
+}
+
+
+// ************************************************************************* //
