@@ -370,7 +370,7 @@ void Foam::polymerCloud::wrapChains()
     for (label c = 0; c < chains_.nChains(); ++c)
     {
         const label first = chains_.start(c);
-        const vector shift = periodic_.shift(x[referenceBead(c)]);
+        const vector shift = periodic_.shift(x[chains_.referenceBead(c)]);
         if (shift == vector::zero)
         {
             continue;
@@ -380,73 +380,6 @@ void Foam::polymerCloud::wrapChains()
             x[i] += shift;
         }
         ++periodicCrossings_;
-    }
-}
-
-
-bool Foam::polymerCloud::sortsChains() const
-{
-    return flow_->solvesFlow() || wall_->active();
-}
-
-
-void Foam::polymerCloud::locateReferenceBeads(const bool unknownOnly)
-{
-    if (!sortsChains() && !Pstream::parRun())
-    {
-        return;
-    }
-
-    const cellLocator& locator = cellLocator::New(mesh_);
-    const boundBox& bounds = mesh_.bounds();
-    const List<vector>& x = chains_.positions();
-    labelList& cell = referenceCells_.update(chains_);
-    for (label c = 0; c < chains_.nChains(); ++c)
-    {
-        const label i = referenceBead(c);
-        if (unknownOnly && cell[i] >= 0)
-        {
-            continue;
-        }
-        const point p = periodic_.wrap(x[i]);
-        cell[i] = bounds.contains(p) ? locator.findCell(p, cell[i]) : -1;
-    }
-}
-
-
-void Foam::polymerCloud::sortChains()
-{
-    if (!sortsChains())
-    {
-        return;
-    }
-
-    // Chains that arrived from other processors are not located yet
-    locateReferenceBeads(true);
-    const labelList& cell = referenceCells_.values();
-
-    // By cell (those outside this processor's mesh last), then by global
-    // id, so that the order does not depend on the chains' history
-    const label nCells = mesh_.nCells();
-    auto key = [&](const label c)
-    {
-        const label celli = cell[referenceBead(c)];
-        return std::make_pair
-        (
-            celli < 0 ? nCells : celli,
-            chains_.globalId(c)
-        );
-    };
-    auto before = [&](const label a, const label b)
-    {
-        return key(a) < key(b);
-    };
-
-    labelList order(identity(chains_.nChains()));
-    if (!std::is_sorted(order.cbegin(), order.cend(), before))
-    {
-        std::sort(order.begin(), order.end(), before);
-        chains_.reorder(order);
     }
 }
 
@@ -677,13 +610,6 @@ Foam::polymerCloud::polymerCloud
     nInjected_(0),
     functions_(),
     periodicCrossings_(0),
-    migrations_(0),
-    migrationSeconds_(0),
-    groupedChains_(0),
-    collisionBoxes_(),
-    processorBounds_(),
-    referenceCells_(-1),
-    chainsOutgrowingBox_(0),
     evolveSeconds_(0),
     beadSteps_(0),
     maxBeadsOutside_(0),
@@ -719,6 +645,26 @@ Foam::polymerCloud::polymerCloud
     wall_ = wallModel::New(subModels, mesh_);
     injection_ = injectionModel::New(subModels, mesh_);
     attachModels();
+    distribution_.reset
+    (
+        new chainDistribution
+        (
+            mesh_,
+            periodic_,
+            chains_,
+            flow_->solvesFlow() || wall_->active()
+        )
+    );
+    collisionGroups_.reset
+    (
+        new collisionGroups
+        (
+            periodic_,
+            chains_,
+            distribution_(),
+            collision_->type() != "none"
+        )
+    );
 
     if (wall_->rejects() && collision_->type() != "none")
     {
@@ -761,7 +707,7 @@ Foam::polymerCloud::polymerCloud
             << " case's " << mesh_.time().timeName()/cloud::prefix/name()
             << endl;
         readChains(undecomposedCloudDir());
-        keepOwnChains();
+        distribution_->keepOwn();
 
         // The noise is keyed by the time index: continue the serial run's
         // (decomposePar gives a case without fields no uniform/time, and
@@ -777,7 +723,7 @@ Foam::polymerCloud::polymerCloud
     else
     {
         initialise();
-        keepOwnChains();
+        distribution_->keepOwn();
         Info<< name() << ": created "
             << returnReduce(chains_.nChains(), sumOp<label>())
             << " chains with the "
@@ -785,7 +731,7 @@ Foam::polymerCloud::polymerCloud
             << endl;
     }
 
-    sortChains();
+    distribution_->sort();
 
     label largestId = -1;
     for (label c = 0; c < chains_.nChains(); ++c)
@@ -836,7 +782,7 @@ void Foam::polymerCloud::evolve()
     const label nChainsBefore = chains_.nChains();
     if (injection_->inject(chains_, seed_, nextChainId_, time))
     {
-        keepOwnChains(nChainsBefore);
+        distribution_->keepOwn(nChainsBefore);
         setThermalVelocities(nChainsBefore);
         nInjected_ += chains_.nChains() - nChainsBefore;
     }
@@ -894,9 +840,9 @@ void Foam::polymerCloud::evolve()
 
     // 3. Rod-rod collisions and bead-wall impacts, chains of different
     // processors that can meet in one loop
-    groupCollidingChains();
+    collisionGroups_->group(positionsOld_, velocitiesOld_);
     collision_->correct(chains_, positionsOld_, deltaT, time, wall_.get());
-    checkCollisionBoxes();
+    collisionGroups_->checkBoxes();
     rejectChains();
     removeEscapedChains();
     for (polymerSubModel& model : models_)
@@ -904,9 +850,9 @@ void Foam::polymerCloud::evolve()
         model.endStep();
     }
     wrapChains();
-    locateReferenceBeads();
-    distributeChains();
-    sortChains();
+    distribution_->locateReferenceBeads();
+    distribution_->distribute();
+    distribution_->sort();
 
     evolveSeconds_ += timer.cpuTimeIncrement();
     beadSteps_ += chains_.nBeads();
@@ -1016,32 +962,6 @@ void Foam::polymerCloud::writeSummary(Ostream& os) const
 }
 
 
-void Foam::polymerCloud::writeProcessorLoads(Ostream& os) const
-{
-    // A processor's exchange time includes its waits for the others: the
-    // busiest one waits least
-    List<FixedList<scalar, 4>> loads(Pstream::nProcs());
-    loads[Pstream::myProcNo()] = FixedList<scalar, 4>
-    ({
-        scalar(chains_.nChains()),
-        scalar(chains_.nBeads()),
-        evolveSeconds_,
-        migrationSeconds_ + flow_->exchangeSeconds()
-    });
-    Pstream::gatherList(loads);
-
-    os  << "    processors' loads (chains, beads, s of cloud evolution,"
-        << " of which exchanging and waiting):" << nl;
-    forAll(loads, proci)
-    {
-        os  << "        processor" << proci << ": "
-            << label(loads[proci][0]) << " chains, "
-            << label(loads[proci][1]) << " beads, " << loads[proci][2]
-            << " s (" << loads[proci][3] << " s)" << nl;
-    }
-}
-
-
 void Foam::polymerCloud::writeReport(Ostream& os) const
 {
     const scalar seconds = returnReduce(evolveSeconds_, maxOp<scalar>());
@@ -1063,20 +983,13 @@ void Foam::polymerCloud::writeReport(Ostream& os) const
         << ", chains carried across cyclic patches "
         << returnReduce(periodicCrossings_, sumOp<label>())
         << ", chains moved between processors "
-        << returnReduce(migrations_, sumOp<label>()) << nl;
+        << returnReduce(distribution_->nMoved(), sumOp<label>()) << nl;
     if (Pstream::parRun())
     {
-        if (collision_->type() != "none")
-        {
-            os  << "    chains grouped with other processors' for their"
-                << " collisions "
-                << returnReduce(groupedChains_, sumOp<label>())
-                << ", chains that left their swept box "
-                << returnReduce(chainsOutgrowingBox_, sumOp<label>()) << nl;
-        }
+        collisionGroups_->writeReport(os);
         os  << "    parallel exchanges (wall clock, slowest processor):"
             << " moving chains "
-            << returnReduce(migrationSeconds_, maxOp<scalar>())
+            << returnReduce(distribution_->seconds(), maxOp<scalar>())
             << " s, beads' flow and momentum "
             << returnReduce(flow_->exchangeSeconds(), maxOp<scalar>())
             << " s" << nl;

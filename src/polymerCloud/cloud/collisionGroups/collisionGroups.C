@@ -8,29 +8,9 @@
 License
     This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
 
-Description
-    Rod-rod collisions between chains of different processors (parallel
-    runs). Step (3) resolves the collisions of a step in one event loop,
-    earliest first, and a collision changes the later paths of its beads:
-    chains that can meet must be in the same loop. Before step (3) each
-    chain's swept box (its beads' x^n and x-dagger, grown by twice the
-    largest bead displacement of the step, room for the paths that
-    collisions and rebounds turn) is compared
-    with the other processors' chains whose boxes reach beyond their own
-    sub-domain; the chains that can meet a chain of another processor,
-    with every chain that can meet those (the closure), form groups, and
-    each group goes whole to one processor (the lowest owner) for the
-    step. Chains that meet no other processor's chain stay where they are.
-    The next step's distribution gives every chain back to the processor
-    holding its reference bead.
-
-    Afterwards every chain's end positions are checked against its box: a
-    chain that left it may have met a chain it was not grouped with; such
-    chains are counted and reported (none in the tests).
-
 \*---------------------------------------------------------------------------*/
 
-#include "polymerCloud.H"
+#include "collisionGroups.H"
 #include "PstreamBuffers.H"
 #include "clockTime.H"
 
@@ -78,14 +58,14 @@ Foam::label findRoot(Foam::labelList& parent, Foam::label i)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::boolList Foam::polymerCloud::chainsMeetingOthers
+Foam::boolList Foam::collisionGroups::chainsMeetingOthers
 (
     const List<boundBox>& boxes,
     bool& anyMeeting
 ) const
 {
     const label myProc = Pstream::myProcNo();
-    const List<boundBox>& procBounds = processorBounds_;
+    const List<boundBox>& procBounds = distribution_.processorBounds();
 
     // The chains reaching into another processor's mesh bounds, from every
     // processor
@@ -169,7 +149,7 @@ Foam::boolList Foam::polymerCloud::chainsMeetingOthers
 }
 
 
-Foam::List<Foam::labelList> Foam::polymerCloud::groupProcessors
+Foam::List<Foam::labelList> Foam::collisionGroups::groupProcessors
 (
     const List<List<boundBox>>& groupBoxes
 ) const
@@ -256,9 +236,13 @@ Foam::List<Foam::labelList> Foam::polymerCloud::groupProcessors
 }
 
 
-void Foam::polymerCloud::groupCollidingChains()
+void Foam::collisionGroups::group
+(
+    DynamicList<vector>& positionsOld,
+    DynamicList<vector>& velocitiesOld
+)
 {
-    if (!Pstream::parRun() || collision_->type() == "none")
+    if (!active_)
     {
         return;
     }
@@ -270,12 +254,12 @@ void Foam::polymerCloud::groupCollidingChains()
     // collision can give a bead up to about twice the largest speed of
     // the beads it involves
     scalar displacement = 0;
-    forAll(positionsOld_, i)
+    forAll(positionsOld, i)
     {
         displacement = max
         (
             displacement,
-            magSqr(chains_.positions()[i] - positionsOld_[i])
+            magSqr(chains_.positions()[i] - positionsOld[i])
         );
     }
     const scalar margin =
@@ -284,7 +268,7 @@ void Foam::polymerCloud::groupCollidingChains()
     List<boundBox> boxes(chains_.nChains());
     forAll(boxes, c)
     {
-        boxes[c] = sweptBox(chains_, c, positionsOld_, margin);
+        boxes[c] = sweptBox(chains_, c, positionsOld, margin);
     }
     bool anyMeeting = false;
     const boolList meets(chainsMeetingOthers(boxes, anyMeeting));
@@ -292,7 +276,7 @@ void Foam::polymerCloud::groupCollidingChains()
     {
         // No chains of two processors can meet this step
         collisionBoxes_ = boxes;
-        migrationSeconds_ += clock.elapsedTime();
+        distribution_.addSeconds(clock.elapsedTime());
         return;
     }
 
@@ -332,22 +316,27 @@ void Foam::polymerCloud::groupCollidingChains()
             sent.append(grouped[k]);
         }
     }
-    moveChains(toProc, sent, true);
-    groupedChains_ += sent.size();
+    distribution_.move
+    (
+        toProc,
+        sent,
+        List<DynamicList<vector>*>({&positionsOld, &velocitiesOld})
+    );
+    nGrouped_ += sent.size();
 
     // The boxes of the chains now here, for the check after the step
     collisionBoxes_.setSize(chains_.nChains());
     forAll(collisionBoxes_, c)
     {
-        collisionBoxes_[c] = sweptBox(chains_, c, positionsOld_, margin);
+        collisionBoxes_[c] = sweptBox(chains_, c, positionsOld, margin);
     }
-    migrationSeconds_ += clock.elapsedTime();
+    distribution_.addSeconds(clock.elapsedTime());
 }
 
 
-void Foam::polymerCloud::checkCollisionBoxes()
+void Foam::collisionGroups::checkBoxes()
 {
-    if (!Pstream::parRun() || collision_->type() == "none")
+    if (!active_)
     {
         return;
     }
@@ -359,11 +348,25 @@ void Foam::polymerCloud::checkCollisionBoxes()
         {
             if (!collisionBoxes_[c].contains(x[i]))
             {
-                ++chainsOutgrowingBox_;
+                ++nOutgrowing_;
                 break;
             }
         }
     }
+}
+
+
+void Foam::collisionGroups::writeReport(Ostream& os) const
+{
+    if (!active_)
+    {
+        return;
+    }
+
+    os  << "    chains grouped with other processors' for their"
+        << " collisions " << returnReduce(nGrouped_, sumOp<label>())
+        << ", chains that left their swept box "
+        << returnReduce(nOutgrowing_, sumOp<label>()) << nl;
 }
 
 

@@ -1,0 +1,384 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "chainDistribution.H"
+#include "PstreamBuffers.H"
+#include "pointField.H"
+#include "clockTime.H"
+#include "pointOwners.H"
+#include "cellLocator.H"
+#include "bitSet.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Write chains of a polymerChains to a stream: count, then per chain its
+// type, global id, positions and velocities
+void sendChains
+(
+    Foam::Ostream& os,
+    const Foam::polymerChains& chains,
+    const Foam::labelUList& chainIndices
+)
+{
+    using namespace Foam;
+
+    os  << chainIndices.size();
+    for (const label c : chainIndices)
+    {
+        const label n = chains.size(c);
+        const label first = chains.start(c);
+        os  << chains.typeIndex(c) << chains.globalId(c)
+            << SubList<vector>(chains.positions(), n, first)
+            << SubList<vector>(chains.velocities(), n, first);
+    }
+}
+
+
+// Read chains written by sendChains and append them
+void receiveChains(Foam::Istream& is, Foam::polymerChains& chains)
+{
+    using namespace Foam;
+
+    label nChains;
+    is  >> nChains;
+    for (label k = 0; k < nChains; ++k)
+    {
+        label typeIndex, globalId;
+        List<vector> positions, velocities;
+        is  >> typeIndex >> globalId >> positions >> velocities;
+        chains.append(typeIndex, globalId, positions, velocities);
+    }
+}
+
+
+// The beads of the listed chains, in order
+Foam::List<Foam::vector> chainBeads
+(
+    const Foam::polymerChains& chains,
+    const Foam::labelUList& chainIndices,
+    const Foam::UList<Foam::vector>& field
+)
+{
+    using namespace Foam;
+
+    DynamicList<vector> beads;
+    for (const label c : chainIndices)
+    {
+        beads.append(SubList<vector>(field, chains.size(c), chains.start(c)));
+    }
+    return List<vector>(beads);
+}
+
+
+// Remove the beads of the listed chains from a field, as
+// polymerChains::remove does from the chains
+void removeBeads
+(
+    const Foam::polymerChains& chains,
+    const Foam::labelUList& chainIndices,
+    Foam::DynamicList<Foam::vector>& field
+)
+{
+    using namespace Foam;
+
+    const bitSet removed(chains.nChains(), chainIndices);
+    label nKept = 0;
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        if (!removed.test(c))
+        {
+            for (label i = chains.start(c); i < chains.end(c); ++i)
+            {
+                field[nKept++] = field[i];
+            }
+        }
+    }
+    field.resize(nKept);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::chainDistribution::chainDistribution
+(
+    const fvMesh& mesh,
+    const periodicImages& periodic,
+    polymerChains& chains,
+    const bool sorted
+)
+:
+    mesh_(mesh),
+    periodic_(periodic),
+    chains_(chains),
+    sorted_(sorted),
+    processorBounds_(),
+    referenceCells_(-1),
+    nMoved_(0),
+    seconds_(0)
+{
+    if (Pstream::parRun())
+    {
+        processorBounds_.setSize(Pstream::nProcs());
+        processorBounds_[Pstream::myProcNo()] = mesh_.bounds();
+        Pstream::gatherList(processorBounds_);
+        Pstream::scatterList(processorBounds_);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::chainDistribution::locateReferenceBeads(const bool unknownOnly)
+{
+    if (!sorted_ && !Pstream::parRun())
+    {
+        return;
+    }
+
+    const cellLocator& locator = cellLocator::New(mesh_);
+    const boundBox& bounds = mesh_.bounds();
+    const List<vector>& x = chains_.positions();
+    labelList& cell = referenceCells_.update(chains_);
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const label i = chains_.referenceBead(c);
+        if (unknownOnly && cell[i] >= 0)
+        {
+            continue;
+        }
+        const point p = periodic_.wrap(x[i]);
+        cell[i] = bounds.contains(p) ? locator.findCell(p, cell[i]) : -1;
+    }
+}
+
+
+void Foam::chainDistribution::distribute()
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    clockTime clock;
+    const List<vector>& x = chains_.positions();
+    const label myProc = Pstream::myProcNo();
+    const label nProcs = Pstream::nProcs();
+
+    // Chains whose reference bead this processor's mesh does not hold go
+    // to the processor that holds it; one that no processor holds (outside
+    // the mesh) stays where it is
+    const labelList& cell = referenceCells_.values();
+    DynamicList<label> leaving;
+    DynamicList<point> leavingPoints;
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const label i = chains_.referenceBead(c);
+        if (cell[i] < 0)
+        {
+            leaving.append(c);
+            leavingPoints.append(periodic_.wrap(x[i]));
+        }
+    }
+    if (returnReduce(leaving.empty(), andOp<bool>()))
+    {
+        seconds_ += clock.elapsedTime();
+        return;
+    }
+    const labelList owner(pointOwners(mesh_, leavingPoints));
+
+    // Send each leaving chain to its new owner
+    List<DynamicList<label>> toProc(nProcs);
+    DynamicList<label> sent;
+    forAll(leaving, k)
+    {
+        const label proci = owner[k];
+        if (proci >= 0 && proci != myProc)
+        {
+            toProc[proci].append(leaving[k]);
+            sent.append(leaving[k]);
+        }
+    }
+
+    move(toProc, sent, UList<DynamicList<vector>*>());
+    nMoved_ += sent.size();
+    seconds_ += clock.elapsedTime();
+}
+
+
+void Foam::chainDistribution::move
+(
+    const List<DynamicList<label>>& toProc,
+    const labelUList& sent,
+    const UList<DynamicList<vector>*>& beadFields
+)
+{
+    for (const DynamicList<vector>* field : beadFields)
+    {
+        if (field->size() != chains_.nBeads())
+        {
+            FatalErrorInFunction
+                << "A field carried with the chains has " << field->size()
+                << " beads, the chains " << chains_.nBeads()
+                << exit(FatalError);
+        }
+    }
+
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(toProc, proci)
+    {
+        if (toProc[proci].size())
+        {
+            UOPstream os(proci, buffers);
+            sendChains(os, chains_, toProc[proci]);
+            for (const DynamicList<vector>* field : beadFields)
+            {
+                os  << chainBeads(chains_, toProc[proci], *field);
+            }
+        }
+    }
+    labelList recvSizes;
+    buffers.finishedSends(recvSizes);
+
+    for (DynamicList<vector>* field : beadFields)
+    {
+        removeBeads(chains_, sent, *field);
+    }
+    chains_.remove(sent);
+
+    forAll(recvSizes, proci)
+    {
+        if (recvSizes[proci])
+        {
+            UIPstream is(proci, buffers);
+            receiveChains(is, chains_);
+            for (DynamicList<vector>* field : beadFields)
+            {
+                const List<vector> values(is);
+                field->append(values);
+            }
+        }
+    }
+}
+
+
+void Foam::chainDistribution::keepOwn(const label firstChain)
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    const List<vector>& x = chains_.positions();
+    pointField references(chains_.nChains() - firstChain);
+    forAll(references, k)
+    {
+        references[k] = periodic_.wrap(x[chains_.referenceBead(firstChain + k)]);
+    }
+    const labelList owner(replicatedPointOwners(mesh_, references));
+
+    DynamicList<label> others;
+    forAll(owner, k)
+    {
+        const label proci = (owner[k] < 0) ? Pstream::masterNo() : owner[k];
+        if (proci != Pstream::myProcNo())
+        {
+            others.append(firstChain + k);
+        }
+    }
+    chains_.remove(others);
+}
+
+
+Foam::polymerChains Foam::chainDistribution::gather() const
+{
+    polymerChains all(chains_.types());
+
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    if (!Pstream::master())
+    {
+        UOPstream os(Pstream::masterNo(), buffers);
+        sendChains(os, chains_, identity(chains_.nChains()));
+    }
+    labelList recvSizes;
+    buffers.finishedSends(recvSizes);
+
+    if (Pstream::master())
+    {
+        for (label c = 0; c < chains_.nChains(); ++c)
+        {
+            const label n = chains_.size(c);
+            const label first = chains_.start(c);
+            all.append
+            (
+                chains_.typeIndex(c),
+                chains_.globalId(c),
+                SubList<vector>(chains_.positions(), n, first),
+                SubList<vector>(chains_.velocities(), n, first)
+            );
+        }
+        forAll(recvSizes, proci)
+        {
+            if (recvSizes[proci])
+            {
+                UIPstream is(proci, buffers);
+                receiveChains(is, all);
+            }
+        }
+    }
+
+    return all;
+}
+
+
+void Foam::chainDistribution::sort()
+{
+    if (!sorted_)
+    {
+        return;
+    }
+
+    // Chains that arrived from other processors are not located yet
+    locateReferenceBeads(true);
+    const labelList& cell = referenceCells_.values();
+
+    // By cell (those outside this processor's mesh last), then by global
+    // id, so that the order does not depend on the chains' history
+    const label nCells = mesh_.nCells();
+    auto key = [&](const label c)
+    {
+        const label celli = cell[chains_.referenceBead(c)];
+        return std::make_pair
+        (
+            celli < 0 ? nCells : celli,
+            chains_.globalId(c)
+        );
+    };
+    auto before = [&](const label a, const label b)
+    {
+        return key(a) < key(b);
+    };
+
+    labelList order(identity(chains_.nChains()));
+    if (!std::is_sorted(order.cbegin(), order.cend(), before))
+    {
+        std::sort(order.begin(), order.end(), before);
+        chains_.reorder(order);
+    }
+}
+
+
+// ************************************************************************* //
