@@ -314,7 +314,7 @@ TEST(rodCollision, ElasticRodsResolvesDimerCrossing)
         dictionary dict;
         dict.add("collision", "elasticRods");
         dict.add("elasticRodsCoeffs", coeffs);
-        const collisionModels::elasticRods model(dict);
+        collisionModels::elasticRods model(dict);
 
         model.correct(chains, positionsOld, dt, dt);
 

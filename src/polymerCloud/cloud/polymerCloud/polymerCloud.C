@@ -110,34 +110,6 @@ void Foam::polymerCloud::readForces(const dictionary& subModels)
 }
 
 
-void Foam::polymerCloud::updateDrift()
-{
-    flow_->update(chains_);
-
-    if (forces_.empty())
-    {
-        return;
-    }
-
-    force_.resize(chains_.nBeads());
-    force_ = Zero;
-    for (const forceModel& model : forces_)
-    {
-        model.addForce(chains_, force_);
-    }
-
-    drift_ = flow_->beadVelocity();
-    for (label c = 0; c < chains_.nChains(); ++c)
-    {
-        const scalar mobility = 1/chains_.type(c).friction();
-        for (label i = chains_.start(c); i < chains_.end(c); ++i)
-        {
-            drift_[i] += mobility*force_[i];
-        }
-    }
-}
-
-
 void Foam::polymerCloud::initialise()
 {
     const dictionary& subModels = properties_.subDict("subModels");
@@ -150,7 +122,7 @@ void Foam::polymerCloud::initialise()
     // Every processor creates the same chains (the initialisations draw
     // counter-based noise and test beads against the whole mesh); each
     // keeps those it owns once their velocities are set
-    initialisation->create(chains_, seed_);
+    initialisation->create(chains_, solution_.seed());
 
     checkRods(properties_.dictionary::name()/"subModels"/"initialisation");
     if
@@ -178,7 +150,7 @@ void Foam::polymerCloud::setThermalVelocities(const label firstChain)
     {
         const chainType& type = chains_.type(c);
         const scalar thermalSpeed = std::sqrt(type.kT()/type.beadMass());
-        const chainNoise noise(seed_, chains_.globalId(c));
+        const chainNoise noise(solution_.seed(), chains_.globalId(c));
 
         for (label i = chains_.start(c); i < chains_.end(c); ++i)
         {
@@ -209,7 +181,7 @@ void Foam::polymerCloud::checkRods(const fileName& origin) const
     {
         const scalar error = chains_.maxRodLengthError(c);
 
-        if (error > rodLengthCheck_)
+        if (error > solution_.rodLengthCheck())
         {
             FatalIOErrorInFunction(properties_)
                 << "Chain " << chains_.globalId(c) << " ("
@@ -217,7 +189,7 @@ void Foam::polymerCloud::checkRods(const fileName& origin) const
                 << " has a rod whose length differs from rodLength "
                 << chains_.type(c).rodLength() << " by a relative " << error
                 << nl << "    expected: every rod of length rodLength to a"
-                << " relative " << rodLengthCheck_
+                << " relative " << solution_.rodLengthCheck()
                 << " (solution { rodLengthCheck <tolerance>; })"
                 << exit(FatalIOError);
         }
@@ -346,12 +318,14 @@ void Foam::polymerCloud::rejectChains()
 
     List<vector>& x = chains_.positions();
     List<vector>& v = chains_.velocities();
+    const UList<vector>& positionsOld = stepper_->positionsOld();
+    const UList<vector>& velocitiesOld = stepper_->velocitiesOld();
     for (const label c : rejected)
     {
         for (label i = chains_.start(c); i < chains_.end(c); ++i)
         {
-            x[i] = positionsOld_[i];
-            v[i] = -velocitiesOld_[i];
+            x[i] = positionsOld[i];
+            v[i] = -velocitiesOld[i];
         }
     }
 
@@ -381,142 +355,6 @@ void Foam::polymerCloud::wrapChains()
         }
         ++periodicCrossings_;
     }
-}
-
-
-void Foam::polymerCloud::integrateChains(const scalar deltaT)
-{
-    integration_->integrate
-    (
-        chains_,
-        drift(),
-        deltaT,
-        mesh_.time().timeIndex(),
-        seed_
-    );
-}
-
-
-void Foam::polymerCloud::recordUnconstrained()
-{
-    if (!flow_->twoWay())
-    {
-        return;
-    }
-
-    const List<vector>& v = chains_.velocities();
-    velocityChange_.resize(v.size());
-    forAll(v, i)
-    {
-        velocityChange_[i] = v[i] - velocitiesOld_[i];
-    }
-    positionsStar_ = chains_.positions();
-}
-
-
-void Foam::polymerCloud::recordVelocityChange()
-{
-    if (!flow_->twoWay())
-    {
-        return;
-    }
-
-    // The friction over the step is zeta (u dt - (x - x^n)) on the path
-    // the bead took: the constraint's displacement adds -zeta (x-dagger -
-    // x*) to that of the unconstrained update
-    const List<vector>& x = chains_.positions();
-    for (label c = 0; c < chains_.nChains(); ++c)
-    {
-        const scalar gamma = 1/chains_.type(c).inertialTime();
-        for (label i = chains_.start(c); i < chains_.end(c); ++i)
-        {
-            velocityChange_[i] -= gamma*(x[i] - positionsStar_[i]);
-        }
-    }
-}
-
-
-void Foam::polymerCloud::subStepChain
-(
-    const label chaini,
-    const scalar deltaT
-)
-{
-    const Time& runTime = mesh_.time();
-    const label first = chains_.start(chaini);
-    const label n = chains_.size(chaini);
-
-    SubList<vector> x(chains_.positions(), n, first);
-    SubList<vector> v(chains_.velocities(), n, first);
-    SubList<vector> subStepStart(positionsOld_, n, first);
-    SubList<vector> change
-    (
-        velocityChange_, flow_->twoWay() ? n : 0, first
-    );
-    const List<vector> xStart(SubList<vector>(positionsOld_, n, first));
-    const List<vector> vStart(SubList<vector>(velocitiesOld_, n, first));
-
-    constraint_->countSubStepped();
-
-    const scalar gamma = 1/chains_.type(chaini).inertialTime();
-
-    for (label nSub = 2; nSub <= constraint_->maxSubSteps(); nSub *= 2)
-    {
-        x = xStart;
-        v = vStart;
-        change = Zero;
-
-        bool converged = true;
-        for (label s = 0; s < nSub && converged; ++s)
-        {
-            // The fluid velocity stays that at x^n; each sub-step has its
-            // own noise, keyed by (nSub, s)
-            subStepStart = x;
-            const List<vector> vSubStart(v);
-            integration_->integrateChain
-            (
-                chains_,
-                chaini,
-                drift(),
-                deltaT/nSub,
-                runTime.timeIndex(),
-                seed_,
-                nSub + s
-            );
-            const List<vector> xSubStar(x);
-            const List<vector> vSubStar(v);
-            converged = constraint_->correctChain
-            (
-                chains_, chaini, positionsOld_, deltaT/nSub, runTime.value()
-            );
-
-            // The friction and noise part, as recordVelocityChange
-            forAll(change, k)
-            {
-                change[k] +=
-                    vSubStar[k] - vSubStart[k] - gamma*(x[k] - xSubStar[k]);
-            }
-        }
-
-        if (converged)
-        {
-            subStepStart = xStart;
-            return;
-        }
-    }
-
-    FatalErrorInFunction
-        << "The constraint solve of chain " << chains_.globalId(chaini)
-        << " (" << chains_.type(chaini).name() << ") at time "
-        << runTime.value() << " did not converge in "
-        << constraint_->maxSubSteps() << " sub-steps of the time step "
-        << deltaT << " (constraint " << constraint_->type() << ")" << nl
-        << "    The chain's state at the step's start may be too distorted"
-        << " (rod-rod collisions or wall rebounds in strong flow leave rod"
-        << " errors): reduce deltaT (maxCo), or raise maxSubSteps or"
-        << " maxIterations"
-        << (constraint_->type() == "newton" ? "" : ", or use newton")
-        << exit(FatalError);
 }
 
 
@@ -571,34 +409,9 @@ Foam::polymerCloud::polymerCloud
         properties
     ),
     periodic_(periodicImages::New(mesh)),
-    active_
-    (
-        properties_.optionalSubDict("solution")
-       .getOrDefault<bool>("active", true)
-    ),
-    seed_
-    (
-        properties_.optionalSubDict("solution")
-       .getOrDefault<label>("seed", 1)
-    ),
-    rodLengthCheck_
-    (
-        checkedInput::positiveScalarOrDefault
-        (
-            properties_.optionalSubDict("solution"),
-            "rodLengthCheck",
-            1e-6,
-            "<relative rod-length mismatch accepted at start>"
-        )
-    ),
+    solution_(properties_),
     types_(),
     chains_(types_),
-    positionsOld_(),
-    velocitiesOld_(),
-    velocityChange_(),
-    failedChains_(),
-    force_(),
-    drift_(),
     flow_(),
     forces_(),
     integration_(),
@@ -645,6 +458,19 @@ Foam::polymerCloud::polymerCloud
     wall_ = wallModel::New(subModels, mesh_);
     injection_ = injectionModel::New(subModels, mesh_);
     attachModels();
+    stepper_.reset
+    (
+        new chainStepper
+        (
+            mesh_.time(),
+            solution_.seed(),
+            chains_,
+            flow_(),
+            forces_,
+            integration_(),
+            constraint_()
+        )
+    );
     distribution_.reset
     (
         new chainDistribution
@@ -767,7 +593,7 @@ Foam::label Foam::polymerCloud::nParcels() const
 
 void Foam::polymerCloud::evolve()
 {
-    if (!active_)
+    if (!solution_.active())
     {
         return;
     }
@@ -780,43 +606,34 @@ void Foam::polymerCloud::evolve()
 
     // New chains fed in, with thermal velocities
     const label nChainsBefore = chains_.nChains();
-    if (injection_->inject(chains_, seed_, nextChainId_, time))
+    if (injection_->inject(chains_, solution_.seed(), nextChainId_, time))
     {
         distribution_->keepOwn(nChainsBefore);
         setThermalVelocities(nChainsBefore);
         nInjected_ += chains_.nChains() - nChainsBefore;
     }
 
-    positionsOld_ = chains_.positions();
-    velocitiesOld_ = chains_.velocities();
+    stepper_->start();
 
     // 1. Unconstrained update in the fluid velocity and forces at x^n
-    updateDrift();
+    stepper_->updateDrift();
     maxBeadsOutside_ = max(maxBeadsOutside_, flow_->nBeadsOutside());
     beadStepsOutside_ += flow_->nBeadsOutside();
-    integrateChains(deltaT);
+    stepper_->integrate(deltaT);
 
     for (polymerCloudFunction& function : functions_)
     {
         function.postIntegrate
         (
-            positionsOld_,
-            velocitiesOld_,
-            forces_.empty() ? UList<vector>() : UList<vector>(force_),
+            stepper_->positionsOld(),
+            stepper_->velocitiesOld(),
+            stepper_->force(),
             deltaT
         );
     }
 
-    recordUnconstrained();
-
     // 2. Rod lengths and rod velocities; failed chains are sub-stepped
-    failedChains_.clear();
-    constraint_->correct(chains_, positionsOld_, deltaT, time, failedChains_);
-    recordVelocityChange();
-    for (const label c : failedChains_)
-    {
-        subStepChain(c, deltaT);
-    }
+    stepper_->constrain(deltaT);
 
     for (polymerCloudFunction& function : functions_)
     {
@@ -832,16 +649,23 @@ void Foam::polymerCloud::evolve()
         flow_->depositMomentum
         (
             chains_,
-            velocityChange_,
-            forces_.empty() ? UList<vector>() : UList<vector>(force_),
+            stepper_->velocityChange(),
+            stepper_->force(),
             deltaT
         );
     }
 
     // 3. Rod-rod collisions and bead-wall impacts, chains of different
     // processors that can meet in one loop
-    collisionGroups_->group(positionsOld_, velocitiesOld_);
-    collision_->correct(chains_, positionsOld_, deltaT, time, wall_.get());
+    collisionGroups_->group
+    (
+        stepper_->positionsOld(),
+        stepper_->velocitiesOld()
+    );
+    collision_->correct
+    (
+        chains_, stepper_->positionsOld(), deltaT, time, wall_.get()
+    );
     collisionGroups_->checkBoxes();
     rejectChains();
     removeEscapedChains();
@@ -866,39 +690,26 @@ void Foam::polymerCloud::evolve()
 
 void Foam::polymerCloud::predictCoupling()
 {
-    const Time& runTime = mesh_.time();
-    const scalar deltaT = runTime.deltaTValue();
+    const scalar deltaT = mesh_.time().deltaTValue();
 
-    positionsOld_ = chains_.positions();
-    velocitiesOld_ = chains_.velocities();
-
-    // The same noise as the step proper (keyed by the time index), so the
-    // predictor differs from it by the flow only
-    updateDrift();
+    // Steps 1 and 2 in the flow of the step's start, with the same noise
+    // as the step proper (keyed by the time index), so the predictor
+    // differs from it by the flow only; the chains then return to x^n
+    stepper_->start();
+    stepper_->updateDrift();
     flow_->storePredictor();
-    integrateChains(deltaT);
-    recordUnconstrained();
-
-    // The rod tensions' displacement, for the momentum they pass on; the
-    // step proper counts the solves and sub-steps the failures
-    DynamicList<label> failed;
-    constraint_->correct
-    (
-        chains_, positionsOld_, deltaT, runTime.value(), failed
-    );
-    constraint_->resetCounters();
-    recordVelocityChange();
+    stepper_->integrate(deltaT);
+    stepper_->constrainUncounted(deltaT);
 
     flow_->depositMomentum
     (
         chains_,
-        velocityChange_,
-        forces_.empty() ? UList<vector>() : UList<vector>(force_),
+        stepper_->velocityChange(),
+        stepper_->force(),
         deltaT
     );
 
-    chains_.positions() = positionsOld_;
-    chains_.velocities() = velocitiesOld_;
+    stepper_->restoreStart();
 }
 
 
@@ -951,7 +762,7 @@ void Foam::polymerCloud::writeSummary(Ostream& os) const
             os  << ' ' << model.type();
         }
     }
-    os  << (active_ ? "" : " (inactive)") << nl;
+    os  << (solution_.active() ? "" : " (inactive)") << nl;
 
     forAll(types_, typei)
     {

@@ -1,0 +1,257 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "chainStepper.H"
+#include "Time.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::chainStepper::chainStepper
+(
+    const Time& time,
+    const label seed,
+    polymerChains& chains,
+    flowModel& flow,
+    const PtrList<forceModel>& forces,
+    const integrationModel& integration,
+    const constraintModel& constraint
+)
+:
+    time_(time),
+    seed_(seed),
+    chains_(chains),
+    flow_(flow),
+    forces_(forces),
+    integration_(integration),
+    constraint_(constraint),
+    positionsOld_(),
+    velocitiesOld_(),
+    positionsStar_(),
+    velocityChange_(),
+    force_(),
+    drift_()
+{}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::chainStepper::recordUnconstrained()
+{
+    if (!flow_.twoWay())
+    {
+        return;
+    }
+
+    const List<vector>& v = chains_.velocities();
+    velocityChange_.resize(v.size());
+    forAll(v, i)
+    {
+        velocityChange_[i] = v[i] - velocitiesOld_[i];
+    }
+    positionsStar_ = chains_.positions();
+}
+
+
+void Foam::chainStepper::recordVelocityChange()
+{
+    if (!flow_.twoWay())
+    {
+        return;
+    }
+
+    // The friction over the step is zeta (u dt - (x - x^n)) on the path
+    // the bead took: the constraint's displacement adds -zeta (x-dagger -
+    // x*) to that of the unconstrained update
+    const List<vector>& x = chains_.positions();
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const scalar gamma = 1/chains_.type(c).inertialTime();
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        {
+            velocityChange_[i] -= gamma*(x[i] - positionsStar_[i]);
+        }
+    }
+}
+
+
+void Foam::chainStepper::subStepChain
+(
+    const label chaini,
+    const scalar deltaT
+)
+{
+    const Time& runTime = time_;
+    const label first = chains_.start(chaini);
+    const label n = chains_.size(chaini);
+
+    SubList<vector> x(chains_.positions(), n, first);
+    SubList<vector> v(chains_.velocities(), n, first);
+    SubList<vector> subStepStart(positionsOld_, n, first);
+    SubList<vector> change
+    (
+        velocityChange_, flow_.twoWay() ? n : 0, first
+    );
+    const List<vector> xStart(SubList<vector>(positionsOld_, n, first));
+    const List<vector> vStart(SubList<vector>(velocitiesOld_, n, first));
+
+    constraint_.countSubStepped();
+
+    const scalar gamma = 1/chains_.type(chaini).inertialTime();
+
+    for (label nSub = 2; nSub <= constraint_.maxSubSteps(); nSub *= 2)
+    {
+        x = xStart;
+        v = vStart;
+        change = Zero;
+
+        bool converged = true;
+        for (label s = 0; s < nSub && converged; ++s)
+        {
+            // The fluid velocity stays that at x^n; each sub-step has its
+            // own noise, keyed by (nSub, s)
+            subStepStart = x;
+            const List<vector> vSubStart(v);
+            integration_.integrateChain
+            (
+                chains_,
+                chaini,
+                drift(),
+                deltaT/nSub,
+                runTime.timeIndex(),
+                seed_,
+                nSub + s
+            );
+            const List<vector> xSubStar(x);
+            const List<vector> vSubStar(v);
+            converged = constraint_.correctChain
+            (
+                chains_, chaini, positionsOld_, deltaT/nSub, runTime.value()
+            );
+
+            // The friction and noise part, as recordVelocityChange
+            forAll(change, k)
+            {
+                change[k] +=
+                    vSubStar[k] - vSubStart[k] - gamma*(x[k] - xSubStar[k]);
+            }
+        }
+
+        if (converged)
+        {
+            subStepStart = xStart;
+            return;
+        }
+    }
+
+    FatalErrorInFunction
+        << "The constraint solve of chain " << chains_.globalId(chaini)
+        << " (" << chains_.type(chaini).name() << ") at time "
+        << runTime.value() << " did not converge in "
+        << constraint_.maxSubSteps() << " sub-steps of the time step "
+        << deltaT << " (constraint " << constraint_.type() << ")" << nl
+        << "    The chain's state at the step's start may be too distorted"
+        << " (rod-rod collisions or wall rebounds in strong flow leave rod"
+        << " errors): reduce deltaT (maxCo), or raise maxSubSteps or"
+        << " maxIterations"
+        << (constraint_.type() == "newton" ? "" : ", or use newton")
+        << exit(FatalError);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::chainStepper::start()
+{
+    positionsOld_ = chains_.positions();
+    velocitiesOld_ = chains_.velocities();
+}
+
+
+void Foam::chainStepper::updateDrift()
+{
+    flow_.update(chains_);
+
+    if (forces_.empty())
+    {
+        return;
+    }
+
+    force_.resize(chains_.nBeads());
+    force_ = Zero;
+    for (const forceModel& model : forces_)
+    {
+        model.addForce(chains_, force_);
+    }
+
+    drift_ = flow_.beadVelocity();
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const scalar mobility = 1/chains_.type(c).friction();
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        {
+            drift_[i] += mobility*force_[i];
+        }
+    }
+}
+
+
+void Foam::chainStepper::integrate(const scalar deltaT)
+{
+    integration_.integrate
+    (
+        chains_,
+        drift(),
+        deltaT,
+        time_.timeIndex(),
+        seed_
+    );
+    recordUnconstrained();
+}
+
+
+void Foam::chainStepper::constrain(const scalar deltaT)
+{
+    DynamicList<label> failedChains;
+    constraint_.correct
+    (
+        chains_, positionsOld_, deltaT, time_.value(), failedChains
+    );
+    recordVelocityChange();
+    for (const label c : failedChains)
+    {
+        subStepChain(c, deltaT);
+    }
+}
+
+
+void Foam::chainStepper::constrainUncounted(const scalar deltaT)
+{
+    // The rod tensions' displacement, for the momentum they pass on; the
+    // step proper counts the solves and sub-steps the failures
+    DynamicList<label> failed;
+    constraint_.correct
+    (
+        chains_, positionsOld_, deltaT, time_.value(), failed
+    );
+    constraint_.resetCounters();
+    recordVelocityChange();
+}
+
+
+void Foam::chainStepper::restoreStart()
+{
+    chains_.positions() = positionsOld_;
+    chains_.velocities() = velocitiesOld_;
+}
+
+
+// ************************************************************************* //

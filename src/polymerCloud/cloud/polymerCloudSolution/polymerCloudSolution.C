@@ -1,0 +1,43 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "polymerCloudSolution.H"
+#include "checkedInput.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::polymerCloudSolution::polymerCloudSolution(const dictionary& properties)
+:
+    active_
+    (
+        properties.optionalSubDict("solution")
+       .getOrDefault<bool>("active", true)
+    ),
+    seed_
+    (
+        properties.optionalSubDict("solution")
+       .getOrDefault<label>("seed", 1)
+    ),
+    rodLengthCheck_
+    (
+        checkedInput::positiveScalarOrDefault
+        (
+            properties.optionalSubDict("solution"),
+            "rodLengthCheck",
+            1e-6,
+            "<relative rod-length mismatch accepted at start>"
+        )
+    )
+{}
+
+
+// ************************************************************************* //

@@ -1,0 +1,220 @@
+/*---------------------------------------------------------------------------*\
+Description
+    The event loop's parts on their own: collisionEventQueue gives events
+    earliest first and passes over those whose beads changed course since
+    they were predicted; chainRods lists the rods of open chains and rings
+    with the rods through each bead; sweptBoxGrid finds exactly the pairs of
+    non-adjacent rods whose swept boxes overlap (against all pairs tested),
+    grows a box with its new pairs, and meets rods across a periodic
+    lattice with the second rod's translation.
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "collisionEventQueue.H"
+#include "chainRods.H"
+#include "sweptBoxGrid.H"
+#include <random>
+#include <set>
+
+using namespace Foam;
+
+namespace
+{
+
+collisionEventQueue::event eventAt
+(
+    const scalar time,
+    const label pair,
+    const FixedList<label, 4>& beads
+)
+{
+    collisionEventQueue::event e;
+    e.time = time;
+    e.pair = pair;
+    e.from = 0;
+    e.offset = time;
+    e.normal = Zero;
+    e.patch = -1;
+    e.beads = beads;
+    return e;
+}
+
+
+// Two chains along x, one open of 4 beads and one ring of 4 beads
+polymerChains twoChains(const PtrList<chainType>& types)
+{
+    polymerChains chains(types);
+    const List<vector> open({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}});
+    const List<vector> ring({{0, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}});
+    chains.append(0, 7, open, List<vector>(4, Zero));
+    chains.append(1, 3, ring, List<vector>(4, Zero));
+    return chains;
+}
+
+} // End anonymous namespace
+
+
+TEST(collisionEventQueue, EarliestFirstAndStaleEventsPassedOver)
+{
+    collisionEventQueue queue;
+    queue.reset(6);
+    queue.push(eventAt(0.5, 0, {0, 1, 2, 3}));
+    queue.push(eventAt(0.2, 1, {2, 3, 4, 5}));
+    queue.push(eventAt(0.7, -1 - 5, {5, -1, -1, -1}));
+    queue.push(eventAt(0.1, 2, {0, 1, 4, 5}));
+
+    // Bead 4 changes course: the events through it (0.1, 0.2) are stale
+    queue.changedCourse(4);
+    queue.push(eventAt(0.3, 1, {2, 3, 4, 5}));
+
+    collisionEventQueue::event e;
+    ASSERT_TRUE(queue.next(e));
+    EXPECT_EQ(e.time, 0.3);
+    ASSERT_TRUE(queue.next(e));
+    EXPECT_EQ(e.time, 0.5);
+    ASSERT_TRUE(queue.next(e));
+    EXPECT_EQ(e.time, 0.7);
+    EXPECT_EQ(e.pair, -6);
+    EXPECT_FALSE(queue.next(e));
+
+    // reset empties the queue and the versions
+    queue.push(eventAt(0.4, 0, {0, 1, 2, 3}));
+    queue.reset(6);
+    EXPECT_FALSE(queue.next(e));
+}
+
+
+TEST(chainRods, OpenChainsAndRings)
+{
+    PtrList<chainType> types(2);
+    types.set(0, new chainType("open", 4, 1, 1, 1, 1, false));
+    types.set(1, new chainType("ring", 4, 1, 1, 1, 1, true));
+    const polymerChains chains(twoChains(types));
+
+    chainRods rods;
+    rods.update(chains);
+    ASSERT_EQ(rods.size(), 3 + 4);
+    EXPECT_EQ(rods[0], labelPair(0, 1));
+    EXPECT_EQ(rods[2], labelPair(2, 3));
+    EXPECT_EQ(rods[6], labelPair(7, 4));    // the ring's closing rod
+    EXPECT_EQ(rods.chain(6), 1);
+    EXPECT_EQ(rods.chainId(6), 3);
+    EXPECT_EQ(rods.chainId(0), 7);
+    EXPECT_EQ(rods.beadRods(0)[0], -1);     // an open chain's end
+    EXPECT_EQ(rods.beadRods(0)[1], 0);
+    EXPECT_EQ(rods.beadRods(4)[0], 6);      // a ring has no ends
+    EXPECT_EQ(rods.beadRods(4)[1], 3);
+    EXPECT_TRUE(rods.adjacent(0, 1));
+    EXPECT_FALSE(rods.adjacent(0, 2));
+    EXPECT_TRUE(rods.adjacent(3, 6));
+}
+
+
+TEST(sweptBoxGrid, FindsExactlyTheOverlappingPairs)
+{
+    // 30 chains of 5 beads at random in a 4 a cube, boxes of their rods
+    // grown by a random margin: the candidates are all non-adjacent pairs
+    // whose boxes overlap, each once
+    std::mt19937_64 gen(11);
+    std::uniform_real_distribution<double> u(0, 4), m(0, 0.3);
+    PtrList<chainType> types(1);
+    types.set(0, new chainType("five", 5, 1, 1, 1, 1, false));
+    polymerChains chains(types);
+    for (label c = 0; c < 30; ++c)
+    {
+        List<vector> x(5);
+        x[0] = vector(u(gen), u(gen), u(gen));
+        for (label i = 1; i < 5; ++i)
+        {
+            vector d(u(gen) - 2, u(gen) - 2, u(gen) - 2);
+            x[i] = x[i - 1] + d/mag(d);
+        }
+        chains.append(0, c, x, List<vector>(5, Zero));
+    }
+    chainRods rods;
+    rods.update(chains);
+
+    List<boundBox> boxes(rods.size());
+    forAll(boxes, rod)
+    {
+        const List<vector>& x = chains.positions();
+        boxes[rod] = boundBox(x[rods[rod].first()]);
+        boxes[rod].add(x[rods[rod].second()]);
+        boxes[rod].inflate(m(gen));
+    }
+
+    sweptBoxGrid grid;
+    grid.build(rods, boxes, List<vector>());
+
+    std::set<std::pair<label, label>> expected, found;
+    forAll(boxes, a)
+    {
+        for (label b = a + 1; b < boxes.size(); ++b)
+        {
+            if (!rods.adjacent(a, b) && boxes[a].overlaps(boxes[b]))
+            {
+                expected.insert({a, b});
+            }
+        }
+    }
+    for (const labelPair& p : grid.pairs())
+    {
+        const label a = min(p.first(), p.second());
+        const label b = max(p.first(), p.second());
+        EXPECT_TRUE(found.insert({a, b}).second) << "pair twice";
+    }
+    EXPECT_GT(expected.size(), 10u);
+    EXPECT_EQ(found, expected);
+
+    // Growing a rod's box to hold every box makes it a candidate with
+    // every rod it does not share a bead with
+    boundBox all(boundBox::invertedBox);
+    for (const boundBox& box : boxes)
+    {
+        all.add(box);
+    }
+    grid.grow(0, all);
+    label withRod0 = 0;
+    for (const labelPair& p : grid.pairs())
+    {
+        withRod0 += (p.first() == 0 || p.second() == 0);
+    }
+    EXPECT_EQ(withRod0, rods.size() - 2);
+    EXPECT_EQ(label(grid.rodPairs(0).size()), withRod0);
+}
+
+
+TEST(sweptBoxGrid, MeetsAcrossThePeriodicLattice)
+{
+    // Two single-rod chains at opposite faces of a period-10 box in x
+    PtrList<chainType> types(1);
+    types.set(0, new chainType("dimer", 2, 1, 1, 1, 1, false));
+    polymerChains chains(types);
+    chains.append(0, 0, List<vector>({{0.1, 0, 0}, {0.1, 1, 0}}),
+        List<vector>(2, Zero));
+    chains.append(0, 1, List<vector>({{9.95, 0.5, -0.5}, {9.95, 0.5, 0.5}}),
+        List<vector>(2, Zero));
+    chainRods rods;
+    rods.update(chains);
+
+    List<boundBox> boxes(2);
+    forAll(boxes, rod)
+    {
+        const List<vector>& x = chains.positions();
+        boxes[rod] = boundBox(x[rods[rod].first()]);
+        boxes[rod].add(x[rods[rod].second()]);
+        boxes[rod].inflate(0.1);
+    }
+
+    sweptBoxGrid grid;
+    grid.build(rods, boxes, List<vector>());
+    EXPECT_EQ(grid.pairs().size(), 0);
+
+    grid.build(rods, boxes, List<vector>({vector(10, 0, 0)}));
+    ASSERT_EQ(grid.pairs().size(), 1);
+    EXPECT_EQ(grid.pairs()[0], labelPair(0, 1));
+    EXPECT_EQ(grid.pairShift(0), vector(-10, 0, 0));
+}
+
+
+// ************************************************************************* //
