@@ -21,8 +21,15 @@ Description
 
     With the cloud's flow model 'none' (quiescent solvent) or 'prescribed'
     (a given homogeneous flow) no flow equations are solved: only the chains
-    are advanced. With 'field' the flow is solved and the chains move in it
-    (one-way coupling).
+    are advanced, and the log reports the write times. With 'field' the
+    flow is solved by PIMPLE each time step (adjustable by maxCo) and the
+    chains move in it. The coupling is set by the field model's coupling
+    entry: oneWay (the default), the chains feel the flow and the momentum
+    equation is pimpleFoam's; twoWay, the momentum the beads exchange with
+    the solvent over the step enters the momentum equation as a source
+    (polymerCloud::SU), so the chains' stress acts on the flow; with
+    predictorCorrector (two-way) the flow is solved twice a step, before
+    and after the chains' step.
 
     \heading Required fields (flow 'field' only)
     \plaintable
@@ -30,7 +37,9 @@ Description
         p       | Kinematic pressure, p/rho [m2/s2]
     \endplaintable
 
-    constant/polymerCloudProperties sets the chains and their models.
+    constant/polymerCloudProperties sets the chains and their models; with
+    flow 'field' the case also needs constant/transportProperties and
+    constant/turbulenceProperties, as pimpleFoam's.
 
 \*---------------------------------------------------------------------------*/
 
