@@ -128,6 +128,7 @@ Foam::chainDistribution::chainDistribution
     processorBounds_(),
     referenceCells_(-1),
     nMoved_(0),
+    nWrapped_(0),
     seconds_(0)
 {
     if (Pstream::parRun())
@@ -377,6 +378,31 @@ void Foam::chainDistribution::sort()
     {
         std::sort(order.begin(), order.end(), before);
         chains_.reorder(order);
+    }
+}
+
+
+void Foam::chainDistribution::wrap()
+{
+    if (!periodic_.active())
+    {
+        return;
+    }
+
+    List<vector>& x = chains_.positions();
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const label first = chains_.start(c);
+        const vector shift = periodic_.shift(x[chains_.referenceBead(c)]);
+        if (shift == vector::zero)
+        {
+            continue;
+        }
+        for (label i = first; i < chains_.end(c); ++i)
+        {
+            x[i] += shift;
+        }
+        ++nWrapped_;
     }
 }
 

@@ -21,6 +21,7 @@ Foam::chainStepper::chainStepper
     const label seed,
     polymerChains& chains,
     flowModel& flow,
+    const polymerCoupling& coupling,
     const PtrList<forceModel>& forces,
     const integrationModel& integration,
     const constraintModel& constraint
@@ -30,6 +31,7 @@ Foam::chainStepper::chainStepper
     seed_(seed),
     chains_(chains),
     flow_(flow),
+    coupling_(coupling),
     forces_(forces),
     integration_(integration),
     constraint_(constraint),
@@ -46,7 +48,7 @@ Foam::chainStepper::chainStepper
 
 void Foam::chainStepper::recordUnconstrained()
 {
-    if (!flow_.twoWay())
+    if (!coupling_.twoWay())
     {
         return;
     }
@@ -63,7 +65,7 @@ void Foam::chainStepper::recordUnconstrained()
 
 void Foam::chainStepper::recordVelocityChange()
 {
-    if (!flow_.twoWay())
+    if (!coupling_.twoWay())
     {
         return;
     }
@@ -98,7 +100,7 @@ void Foam::chainStepper::subStepChain
     SubList<vector> subStepStart(positionsOld_, n, first);
     SubList<vector> change
     (
-        velocityChange_, flow_.twoWay() ? n : 0, first
+        velocityChange_, coupling_.twoWay() ? n : 0, first
     );
     const List<vector> xStart(SubList<vector>(positionsOld_, n, first));
     const List<vector> vStart(SubList<vector>(velocitiesOld_, n, first));

@@ -36,12 +36,4 @@ Foam::flowModel::flowModel
 {}
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::tmp<Foam::fvVectorMatrix> Foam::flowModel::SU(volVectorField& U) const
-{
-    return tmp<fvVectorMatrix>::New(U, dimVelocity*dimVolume/dimTime);
-}
-
-
 // ************************************************************************* //

@@ -1,0 +1,148 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+Description
+    The polymerCloud's reports: the summary of what it models, and the
+    cost, counts and failures of the run at its end (each sub-model writes
+    its own lines), with the processors' loads in parallel runs.
+
+\*---------------------------------------------------------------------------*/
+
+#include "polymerCloud.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::polymerCloud::writeProcessorLoads(Ostream& os) const
+{
+    // A processor's exchange time includes its waits for the others: the
+    // busiest one waits least
+    List<FixedList<scalar, 4>> loads(Pstream::nProcs());
+    loads[Pstream::myProcNo()] = FixedList<scalar, 4>
+    ({
+        scalar(chains_.nChains()),
+        scalar(chains_.nBeads()),
+        evolveSeconds_,
+        distribution_->seconds() + flow_->exchangeSeconds()
+      + coupling_->exchangeSeconds()
+    });
+    Pstream::gatherList(loads);
+
+    os  << "    processors' loads (chains, beads, s of cloud evolution,"
+        << " of which exchanging and waiting):" << nl;
+    forAll(loads, proci)
+    {
+        os  << "        processor" << proci << ": "
+            << label(loads[proci][0]) << " chains, "
+            << label(loads[proci][1]) << " beads, " << loads[proci][2]
+            << " s (" << loads[proci][3] << " s)" << nl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::polymerCloud::writeSummary(Ostream& os) const
+{
+    // Chains per type, over all processors
+    labelList nChainsOfType(types_.size(), Zero);
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        ++nChainsOfType[chains_.typeIndex(c)];
+    }
+    Pstream::listCombineGather(nChainsOfType, plusEqOp<label>());
+
+    os  << name() << ':';
+    label nListed = 0;
+    forAll(types_, typei)
+    {
+        if (nChainsOfType[typei])
+        {
+            os  << (nListed++ ? " +" : "") << ' ' << nChainsOfType[typei]
+                << (types_[typei].ring() ? " ring" : " chain")
+                << (nChainsOfType[typei] > 1 ? "s" : "") << " x "
+                << types_[typei].nBeads() << " beads";
+        }
+    }
+    if (!nListed)
+    {
+        os  << " no chains";
+    }
+
+    os  << "; integration " << integration_->type()
+        << "; constraint " << constraint_->type()
+        << "; collision " << collision_->type()
+        << "; wall " << wall_->type()
+        << "; flow " << flow_->type();
+    if (forces_.size())
+    {
+        os  << "; forces";
+        for (const forceModel& model : forces_)
+        {
+            os  << ' ' << model.type();
+        }
+    }
+    os  << (solution_.active() ? "" : " (inactive)") << nl;
+
+    forAll(types_, typei)
+    {
+        os  << "    ";
+        types_[typei].writeSummary(os);
+        os  << nl;
+    }
+}
+
+
+void Foam::polymerCloud::writeReport(Ostream& os) const
+{
+    const scalar seconds = returnReduce(evolveSeconds_, maxOp<scalar>());
+    const scalar beadSteps = returnReduce(beadSteps_, sumOp<scalar>());
+
+    os  << name() << ": " << beadSteps << " bead-steps in " << seconds
+        << " s of cloud evolution";
+    if (seconds > 0)
+    {
+        os  << ", " << beadSteps/seconds << " bead-steps/s";
+    }
+    os  << nl;
+    for (const polymerSubModel& model : models_)
+    {
+        model.writeReport(os);
+    }
+    os
+        << "    chains injected " << returnReduce(nInjected_, sumOp<label>())
+        << ", chains carried across cyclic patches "
+        << returnReduce(distribution_->nWrapped(), sumOp<label>())
+        << ", chains moved between processors "
+        << returnReduce(distribution_->nMoved(), sumOp<label>()) << nl;
+    if (Pstream::parRun())
+    {
+        collisionGroups_->writeReport(os);
+        os  << "    parallel exchanges (wall clock, slowest processor):"
+            << " moving chains "
+            << returnReduce(distribution_->seconds(), maxOp<scalar>())
+            << " s, beads' flow and momentum "
+            << returnReduce
+               (
+                   flow_->exchangeSeconds() + coupling_->exchangeSeconds(),
+                   maxOp<scalar>()
+               )
+            << " s" << nl;
+        writeProcessorLoads(os);
+    }
+    os
+        << "    beads " << nParcels() << ", outside the mesh "
+        << nBeadsOutside() << " (checked every step: at most "
+        << returnReduce(maxBeadsOutside_, maxOp<label>()) << " in a step, "
+        << returnReduce(beadStepsOutside_, sumOp<scalar>())
+        << " bead-steps in all)" << nl;
+}
+
+
+// ************************************************************************* //
