@@ -51,6 +51,8 @@ Description
 #include "polymerCloud.H"
 #include "progressReport.H"
 
+using namespace Foam::polymer;
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 int main(int argc, char *argv[])

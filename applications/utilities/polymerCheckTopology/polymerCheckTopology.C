@@ -48,6 +48,7 @@ Usage
 #include "knotDeterminant.H"
 
 using namespace Foam;
+using namespace Foam::polymer;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

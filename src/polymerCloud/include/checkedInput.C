@@ -25,6 +25,7 @@ void missing
 )
 {
     using namespace Foam;
+    using namespace Foam::polymer;
     FatalIOErrorInFunction(dict)
         << "Missing keyword '" << keyword << "' in " << dict.name() << nl
         << "    expected: " << keyword << ' ' << meaning.c_str() << ';'
@@ -36,7 +37,7 @@ void missing
 
 // * * * * * * * * * * * * * * * * Functions  * * * * * * * * * * * * * * * //
 
-Foam::scalar Foam::checkedInput::positiveScalar
+Foam::scalar Foam::polymer::checkedInput::positiveScalar
 (
     const dictionary& dict,
     const word& keyword,
@@ -64,7 +65,7 @@ Foam::scalar Foam::checkedInput::positiveScalar
 }
 
 
-Foam::scalar Foam::checkedInput::positiveScalarOrDefault
+Foam::scalar Foam::polymer::checkedInput::positiveScalarOrDefault
 (
     const dictionary& dict,
     const word& keyword,
@@ -81,7 +82,7 @@ Foam::scalar Foam::checkedInput::positiveScalarOrDefault
 }
 
 
-Foam::label Foam::checkedInput::labelAtLeast
+Foam::label Foam::polymer::checkedInput::labelAtLeast
 (
     const dictionary& dict,
     const word& keyword,
@@ -110,7 +111,7 @@ Foam::label Foam::checkedInput::labelAtLeast
 }
 
 
-Foam::label Foam::checkedInput::labelAtLeastOrDefault
+Foam::label Foam::polymer::checkedInput::labelAtLeastOrDefault
 (
     const dictionary& dict,
     const word& keyword,
@@ -128,7 +129,7 @@ Foam::label Foam::checkedInput::labelAtLeastOrDefault
 }
 
 
-Foam::word Foam::checkedInput::modelType
+Foam::word Foam::polymer::checkedInput::modelType
 (
     const dictionary& dict,
     const word& keyword,
@@ -148,7 +149,7 @@ Foam::word Foam::checkedInput::modelType
 }
 
 
-const Foam::dictionary& Foam::checkedInput::subDict
+const Foam::dictionary& Foam::polymer::checkedInput::subDict
 (
     const dictionary& dict,
     const word& keyword,

@@ -44,6 +44,7 @@ Usage
 #include <vector>
 
 using namespace Foam;
+using namespace Foam::polymer;
 using namespace polymerCloudTest;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

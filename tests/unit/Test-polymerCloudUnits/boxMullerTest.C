@@ -22,6 +22,7 @@ Description
 #include <vector>
 
 using namespace Foam;
+using namespace Foam::polymer;
 
 namespace
 {

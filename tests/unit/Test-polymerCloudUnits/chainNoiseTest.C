@@ -16,6 +16,7 @@ Description
 #include <cmath>
 
 using namespace Foam;
+using namespace Foam::polymer;
 
 
 // Same inputs give identical outputs; changing any input changes them.

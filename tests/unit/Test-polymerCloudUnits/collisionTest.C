@@ -34,6 +34,7 @@ Description
 #include <sstream>
 
 using namespace Foam;
+using namespace Foam::polymer;
 using namespace polymerCloudTest;
 
 namespace

@@ -17,6 +17,7 @@ Description
 #include <tuple>
 
 using namespace Foam;
+using namespace Foam::polymer;
 using namespace polymerCloudTest;
 
 namespace

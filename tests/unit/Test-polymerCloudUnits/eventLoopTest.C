@@ -17,6 +17,7 @@ Description
 #include <set>
 
 using namespace Foam;
+using namespace Foam::polymer;
 
 namespace
 {

@@ -15,6 +15,7 @@ Description
 #include "exactOU.H"
 
 using namespace Foam;
+using namespace Foam::polymer;
 using namespace polymerCloudTest;
 
 namespace

@@ -10,6 +10,7 @@ Description
 #include "testHelpers.H"
 
 using namespace Foam;
+using namespace Foam::polymer;
 using namespace polymerCloudTest;
 
 TEST(polymerChains, ReorderMovesWholeChains)

@@ -11,6 +11,7 @@ Description
 #include "trefoil.H"
 
 using namespace Foam;
+using namespace Foam::polymer;
 
 namespace
 {

@@ -11,6 +11,7 @@ Description
 #include <vector>
 
 using namespace Foam;
+using namespace Foam::polymer;
 
 namespace
 {

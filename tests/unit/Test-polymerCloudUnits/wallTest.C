@@ -31,6 +31,7 @@ Description
 #include <string>
 
 using namespace Foam;
+using namespace Foam::polymer;
 using namespace polymerCloudTest;
 
 namespace

@@ -15,7 +15,7 @@ License
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class Type>
-Foam::beadData<Type>::beadData(const Type& unknown)
+Foam::polymer::beadData<Type>::beadData(const Type& unknown)
 :
     unknown_(unknown),
     values_(),
@@ -27,7 +27,8 @@ Foam::beadData<Type>::beadData(const Type& unknown)
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class Type>
-Foam::List<Type>& Foam::beadData<Type>::update(const polymerChains& chains)
+Foam::List<Type>&
+Foam::polymer::beadData<Type>::update(const polymerChains& chains)
 {
     if
     (

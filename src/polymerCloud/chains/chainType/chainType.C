@@ -15,12 +15,12 @@ License
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-const Foam::scalar Foam::chainType::boltzmannConstant = 1.380649e-23;
+const Foam::scalar Foam::polymer::chainType::boltzmannConstant = 1.380649e-23;
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::chainType::chainType(const word& name, const dictionary& dict)
+Foam::polymer::chainType::chainType(const word& name, const dictionary& dict)
 :
     name_(name),
     nBeads_
@@ -75,7 +75,7 @@ Foam::chainType::chainType(const word& name, const dictionary& dict)
 }
 
 
-Foam::chainType::chainType
+Foam::polymer::chainType::chainType
 (
     const word& name,
     const label nBeads,
@@ -98,7 +98,7 @@ Foam::chainType::chainType
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::chainType::writeSummary(Ostream& os) const
+void Foam::polymer::chainType::writeSummary(Ostream& os) const
 {
     os  << name_ << ": " << (ring_ ? "ring" : "open chain") << " of "
         << nBeads_ << " beads, a " << rodLength_ << ", m " << beadMass_

@@ -16,7 +16,7 @@ License
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::polymerChains::polymerChains(const PtrList<chainType>& types)
+Foam::polymer::polymerChains::polymerChains(const PtrList<chainType>& types)
 :
     types_(types),
     positions_(),
@@ -30,7 +30,7 @@ Foam::polymerChains::polymerChains(const PtrList<chainType>& types)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::polymerChains::append
+void Foam::polymer::polymerChains::append
 (
     const label typeIndex,
     const label globalId,
@@ -61,7 +61,7 @@ void Foam::polymerChains::append
 }
 
 
-Foam::label Foam::polymerChains::chainOf(const label beadi) const
+Foam::label Foam::polymer::polymerChains::chainOf(const label beadi) const
 {
     // The last chain whose first bead is at or before beadi
     return
@@ -77,7 +77,7 @@ Foam::label Foam::polymerChains::chainOf(const label beadi) const
 }
 
 
-void Foam::polymerChains::remove(const labelUList& chainIndices)
+void Foam::polymer::polymerChains::remove(const labelUList& chainIndices)
 {
     ++layoutVersion_;
     boolList removed(nChains(), false);
@@ -117,7 +117,7 @@ void Foam::polymerChains::remove(const labelUList& chainIndices)
 }
 
 
-void Foam::polymerChains::reorder(const labelUList& newToOld)
+void Foam::polymer::polymerChains::reorder(const labelUList& newToOld)
 {
     ++layoutVersion_;
     List<vector> positions(positions_.size());
@@ -149,7 +149,7 @@ void Foam::polymerChains::reorder(const labelUList& newToOld)
 }
 
 
-void Foam::polymerChains::clear()
+void Foam::polymer::polymerChains::clear()
 {
     ++layoutVersion_;
     positions_.clear();
@@ -160,7 +160,8 @@ void Foam::polymerChains::clear()
 }
 
 
-Foam::scalar Foam::polymerChains::maxRodLengthError(const label chaini) const
+Foam::scalar
+Foam::polymer::polymerChains::maxRodLengthError(const label chaini) const
 {
     const chainType& t = type(chaini);
     const vector* x = positions_.cdata() + start(chaini);
@@ -177,7 +178,7 @@ Foam::scalar Foam::polymerChains::maxRodLengthError(const label chaini) const
 }
 
 
-Foam::scalar Foam::polymerChains::maxRodLengthError() const
+Foam::scalar Foam::polymer::polymerChains::maxRodLengthError() const
 {
     scalar maxError = 0;
     for (label c = 0; c < nChains(); ++c)
@@ -188,7 +189,8 @@ Foam::scalar Foam::polymerChains::maxRodLengthError() const
 }
 
 
-Foam::vector Foam::polymerChains::centreOfMass(const label chaini) const
+Foam::vector
+Foam::polymer::polymerChains::centreOfMass(const label chaini) const
 {
     vector sum(Zero);
     for (label i = start(chaini); i < end(chaini); ++i)
@@ -200,7 +202,7 @@ Foam::vector Foam::polymerChains::centreOfMass(const label chaini) const
 
 
 Foam::scalar
-Foam::polymerChains::radiusOfGyrationSqr(const label chaini) const
+Foam::polymer::polymerChains::radiusOfGyrationSqr(const label chaini) const
 {
     const vector centre = centreOfMass(chaini);
 
@@ -213,13 +215,14 @@ Foam::polymerChains::radiusOfGyrationSqr(const label chaini) const
 }
 
 
-Foam::scalar Foam::polymerChains::endToEndSqr(const label chaini) const
+Foam::scalar Foam::polymer::polymerChains::endToEndSqr(const label chaini) const
 {
     return magSqr(positions_[end(chaini) - 1] - positions_[start(chaini)]);
 }
 
 
-Foam::scalar Foam::polymerChains::kineticEnergy(const label chaini) const
+Foam::scalar
+Foam::polymer::polymerChains::kineticEnergy(const label chaini) const
 {
     scalar sum = 0;
     for (label i = start(chaini); i < end(chaini); ++i)

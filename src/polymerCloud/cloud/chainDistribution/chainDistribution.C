@@ -28,11 +28,12 @@ namespace
 void sendChains
 (
     Foam::Ostream& os,
-    const Foam::polymerChains& chains,
+    const Foam::polymer::polymerChains& chains,
     const Foam::labelUList& chainIndices
 )
 {
     using namespace Foam;
+    using namespace Foam::polymer;
 
     os  << chainIndices.size();
     for (const label c : chainIndices)
@@ -47,9 +48,10 @@ void sendChains
 
 
 // Read chains written by sendChains and append them
-void receiveChains(Foam::Istream& is, Foam::polymerChains& chains)
+void receiveChains(Foam::Istream& is, Foam::polymer::polymerChains& chains)
 {
     using namespace Foam;
+    using namespace Foam::polymer;
 
     label nChains;
     is  >> nChains;
@@ -66,12 +68,13 @@ void receiveChains(Foam::Istream& is, Foam::polymerChains& chains)
 // The beads of the listed chains, in order
 Foam::List<Foam::vector> chainBeads
 (
-    const Foam::polymerChains& chains,
+    const Foam::polymer::polymerChains& chains,
     const Foam::labelUList& chainIndices,
     const Foam::UList<Foam::vector>& field
 )
 {
     using namespace Foam;
+    using namespace Foam::polymer;
 
     DynamicList<vector> beads;
     for (const label c : chainIndices)
@@ -86,12 +89,13 @@ Foam::List<Foam::vector> chainBeads
 // polymerChains::remove does from the chains
 void removeBeads
 (
-    const Foam::polymerChains& chains,
+    const Foam::polymer::polymerChains& chains,
     const Foam::labelUList& chainIndices,
     Foam::DynamicList<Foam::vector>& field
 )
 {
     using namespace Foam;
+    using namespace Foam::polymer;
 
     const bitSet removed(chains.nChains(), chainIndices);
     label nKept = 0;
@@ -113,7 +117,7 @@ void removeBeads
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::chainDistribution::chainDistribution
+Foam::polymer::chainDistribution::chainDistribution
 (
     const fvMesh& mesh,
     const periodicImages& periodic,
@@ -143,7 +147,8 @@ Foam::chainDistribution::chainDistribution
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::chainDistribution::locateReferenceBeads(const bool unknownOnly)
+void
+Foam::polymer::chainDistribution::locateReferenceBeads(const bool unknownOnly)
 {
     if (!sorted_ && !Pstream::parRun())
     {
@@ -167,7 +172,7 @@ void Foam::chainDistribution::locateReferenceBeads(const bool unknownOnly)
 }
 
 
-void Foam::chainDistribution::distribute()
+void Foam::polymer::chainDistribution::distribute()
 {
     if (!Pstream::parRun())
     {
@@ -220,7 +225,7 @@ void Foam::chainDistribution::distribute()
 }
 
 
-void Foam::chainDistribution::move
+void Foam::polymer::chainDistribution::move
 (
     const List<DynamicList<label>>& toProc,
     const labelUList& sent,
@@ -276,7 +281,7 @@ void Foam::chainDistribution::move
 }
 
 
-void Foam::chainDistribution::keepOwn(const label firstChain)
+void Foam::polymer::chainDistribution::keepOwn(const label firstChain)
 {
     if (!Pstream::parRun())
     {
@@ -287,7 +292,8 @@ void Foam::chainDistribution::keepOwn(const label firstChain)
     pointField references(chains_.nChains() - firstChain);
     forAll(references, k)
     {
-        references[k] = periodic_.wrap(x[chains_.referenceBead(firstChain + k)]);
+        const label i = chains_.referenceBead(firstChain + k);
+        references[k] = periodic_.wrap(x[i]);
     }
     const labelList owner(replicatedPointOwners(mesh_, references));
 
@@ -304,7 +310,7 @@ void Foam::chainDistribution::keepOwn(const label firstChain)
 }
 
 
-Foam::polymerChains Foam::chainDistribution::gather() const
+Foam::polymer::polymerChains Foam::polymer::chainDistribution::gather() const
 {
     polymerChains all(chains_.types());
 
@@ -345,7 +351,7 @@ Foam::polymerChains Foam::chainDistribution::gather() const
 }
 
 
-void Foam::chainDistribution::sort()
+void Foam::polymer::chainDistribution::sort()
 {
     if (!sorted_)
     {
@@ -382,7 +388,7 @@ void Foam::chainDistribution::sort()
 }
 
 
-void Foam::chainDistribution::wrap()
+void Foam::polymer::chainDistribution::wrap()
 {
     if (!periodic_.active())
     {

@@ -15,7 +15,7 @@ License
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::chainStepper::chainStepper
+Foam::polymer::chainStepper::chainStepper
 (
     const Time& time,
     const label seed,
@@ -46,7 +46,7 @@ Foam::chainStepper::chainStepper
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::chainStepper::recordUnconstrained()
+void Foam::polymer::chainStepper::recordUnconstrained()
 {
     if (!coupling_.twoWay())
     {
@@ -63,7 +63,7 @@ void Foam::chainStepper::recordUnconstrained()
 }
 
 
-void Foam::chainStepper::recordVelocityChange()
+void Foam::polymer::chainStepper::recordVelocityChange()
 {
     if (!coupling_.twoWay())
     {
@@ -85,7 +85,7 @@ void Foam::chainStepper::recordVelocityChange()
 }
 
 
-void Foam::chainStepper::subStepChain
+void Foam::polymer::chainStepper::subStepChain
 (
     const label chaini,
     const scalar deltaT
@@ -171,14 +171,14 @@ void Foam::chainStepper::subStepChain
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::chainStepper::start()
+void Foam::polymer::chainStepper::start()
 {
     positionsOld_ = chains_.positions();
     velocitiesOld_ = chains_.velocities();
 }
 
 
-void Foam::chainStepper::updateDrift()
+void Foam::polymer::chainStepper::updateDrift()
 {
     flow_.update(chains_);
 
@@ -206,7 +206,7 @@ void Foam::chainStepper::updateDrift()
 }
 
 
-void Foam::chainStepper::integrate(const scalar deltaT)
+void Foam::polymer::chainStepper::integrate(const scalar deltaT)
 {
     integration_.integrate
     (
@@ -220,7 +220,7 @@ void Foam::chainStepper::integrate(const scalar deltaT)
 }
 
 
-void Foam::chainStepper::constrain(const scalar deltaT)
+void Foam::polymer::chainStepper::constrain(const scalar deltaT)
 {
     DynamicList<label> failedChains;
     constraint_.correct
@@ -235,7 +235,7 @@ void Foam::chainStepper::constrain(const scalar deltaT)
 }
 
 
-void Foam::chainStepper::constrainUncounted(const scalar deltaT)
+void Foam::polymer::chainStepper::constrainUncounted(const scalar deltaT)
 {
     // The rod tensions' displacement, for the momentum they pass on; the
     // step proper counts the solves and sub-steps the failures
@@ -249,7 +249,7 @@ void Foam::chainStepper::constrainUncounted(const scalar deltaT)
 }
 
 
-void Foam::chainStepper::restoreStart()
+void Foam::polymer::chainStepper::restoreStart()
 {
     chains_.positions() = positionsOld_;
     chains_.velocities() = velocitiesOld_;

@@ -22,13 +22,14 @@ namespace
 // A chain's swept box over the step, grown by a margin
 Foam::boundBox sweptBox
 (
-    const Foam::polymerChains& chains,
+    const Foam::polymer::polymerChains& chains,
     const Foam::label c,
     const Foam::UList<Foam::vector>& positionsOld,
     const Foam::scalar margin
 )
 {
     using namespace Foam;
+    using namespace Foam::polymer;
 
     const List<vector>& x = chains.positions();
     boundBox bb(boundBox::invertedBox);
@@ -58,7 +59,7 @@ Foam::label findRoot(Foam::labelList& parent, Foam::label i)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::boolList Foam::collisionGroups::chainsMeetingOthers
+Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
 (
     const List<boundBox>& boxes,
     bool& anyMeeting
@@ -149,7 +150,7 @@ Foam::boolList Foam::collisionGroups::chainsMeetingOthers
 }
 
 
-Foam::List<Foam::labelList> Foam::collisionGroups::groupProcessors
+Foam::List<Foam::labelList> Foam::polymer::collisionGroups::groupProcessors
 (
     const List<List<boundBox>>& groupBoxes
 ) const
@@ -236,7 +237,7 @@ Foam::List<Foam::labelList> Foam::collisionGroups::groupProcessors
 }
 
 
-void Foam::collisionGroups::group
+void Foam::polymer::collisionGroups::group
 (
     DynamicList<vector>& positionsOld,
     DynamicList<vector>& velocitiesOld
@@ -334,7 +335,7 @@ void Foam::collisionGroups::group
 }
 
 
-void Foam::collisionGroups::checkBoxes()
+void Foam::polymer::collisionGroups::checkBoxes()
 {
     if (!active_)
     {
@@ -356,7 +357,7 @@ void Foam::collisionGroups::checkBoxes()
 }
 
 
-void Foam::collisionGroups::writeReport(Ostream& os) const
+void Foam::polymer::collisionGroups::writeReport(Ostream& os) const
 {
     if (!active_)
     {

@@ -20,13 +20,16 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(polymerCloud, 0);
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::polymerCloud::removeEscapedChains()
+void Foam::polymer::polymerCloud::removeEscapedChains()
 {
     const DynamicList<label>& beads = wall_->escapedBeads();
     if (returnReduce(beads.empty(), andOp<bool>()))
@@ -80,7 +83,7 @@ void Foam::polymerCloud::removeEscapedChains()
 }
 
 
-void Foam::polymerCloud::rejectChains()
+void Foam::polymer::polymerCloud::rejectChains()
 {
     const DynamicList<label>& beads = wall_->rejectedBeads();
     if (beads.empty())
@@ -117,7 +120,7 @@ void Foam::polymerCloud::rejectChains()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::polymerCloud::polymerCloud
+Foam::polymer::polymerCloud::polymerCloud
 (
     const word& cloudName,
     const fvMesh& mesh
@@ -143,7 +146,7 @@ Foam::polymerCloud::polymerCloud
 {}
 
 
-Foam::polymerCloud::polymerCloud
+Foam::polymer::polymerCloud::polymerCloud
 (
     const word& cloudName,
     const fvMesh& mesh,
@@ -222,19 +225,19 @@ Foam::polymerCloud::polymerCloud
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::polymerCloud::nBeadsOutside() const
+Foam::label Foam::polymer::polymerCloud::nBeadsOutside() const
 {
     return returnReduce(flow_->nBeadsOutside(), sumOp<label>());
 }
 
 
-Foam::label Foam::polymerCloud::nParcels() const
+Foam::label Foam::polymer::polymerCloud::nParcels() const
 {
     return returnReduce(chains_.nBeads(), sumOp<label>());
 }
 
 
-void Foam::polymerCloud::evolve()
+void Foam::polymer::polymerCloud::evolve()
 {
     if (!solution_.active())
     {
@@ -331,7 +334,7 @@ void Foam::polymerCloud::evolve()
 }
 
 
-void Foam::polymerCloud::predictCoupling()
+void Foam::polymer::polymerCloud::predictCoupling()
 {
     const scalar deltaT = mesh_.time().deltaTValue();
 
@@ -356,7 +359,7 @@ void Foam::polymerCloud::predictCoupling()
 }
 
 
-void Foam::polymerCloud::resetIntervalCounters() const
+void Foam::polymer::polymerCloud::resetIntervalCounters() const
 {
     for (const polymerSubModel& model : models_)
     {

@@ -34,7 +34,7 @@ Description
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
-Foam::IOobject Foam::polymerCloud::fieldIOobject
+Foam::IOobject Foam::polymer::polymerCloud::fieldIOobject
 (
     const word& fieldName,
     const IOobject::readOption r
@@ -52,26 +52,27 @@ Foam::IOobject Foam::polymerCloud::fieldIOobject
 }
 
 
-bool Foam::polymerCloud::savedCloudExists(const fileName& dir)
+bool Foam::polymer::polymerCloud::savedCloudExists(const fileName& dir)
 {
     return isFile(dir/"position") || isFile(dir/"positions");
 }
 
 
-Foam::fileName Foam::polymerCloud::savedCloudDir() const
+Foam::fileName Foam::polymer::polymerCloud::savedCloudDir() const
 {
     return mesh_.time().timePath()/cloud::prefix/name();
 }
 
 
-Foam::fileName Foam::polymerCloud::undecomposedCloudDir() const
+Foam::fileName Foam::polymer::polymerCloud::undecomposedCloudDir() const
 {
     const Time& runTime = mesh_.time();
     return runTime.globalPath()/runTime.timeName()/cloud::prefix/name();
 }
 
 
-Foam::List<Foam::point> Foam::polymerCloud::readPositions(const IOobject& io)
+Foam::List<Foam::point>
+Foam::polymer::polymerCloud::readPositions(const IOobject& io)
 {
     IFstream is(io.objectPath());
 
@@ -98,7 +99,7 @@ Foam::List<Foam::point> Foam::polymerCloud::readPositions(const IOobject& io)
 }
 
 
-Foam::List<Foam::point> Foam::polymerCloud::readSavedPositions
+Foam::List<Foam::point> Foam::polymer::polymerCloud::readSavedPositions
 (
     const IOobject& io
 )
@@ -116,7 +117,7 @@ Foam::List<Foam::point> Foam::polymerCloud::readSavedPositions
 }
 
 
-void Foam::polymerCloud::readChains(const fileName& dir)
+void Foam::polymer::polymerCloud::readChains(const fileName& dir)
 {
     auto io = [&](const word& fieldName)
     {
@@ -190,7 +191,7 @@ void Foam::polymerCloud::readChains(const fileName& dir)
 }
 
 
-void Foam::polymerCloud::writePositions() const
+void Foam::polymer::polymerCloud::writePositions() const
 {
     const IOobject io(fieldIOobject("positions", IOobject::NO_READ));
     mkDir(io.path());
@@ -216,7 +217,7 @@ void Foam::polymerCloud::writePositions() const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::polymerCloud::writeObject
+bool Foam::polymer::polymerCloud::writeObject
 (
     IOstream::streamFormat fmt,
     IOstream::versionNumber ver,
@@ -276,7 +277,7 @@ bool Foam::polymerCloud::writeObject
 }
 
 
-void Foam::polymerCloud::writeObjects(objectRegistry& obr) const
+void Foam::polymer::polymerCloud::writeObjects(objectRegistry& obr) const
 {
     IOField<point>& position =
         cloud::createIOField<point>("position", chains_.nBeads(), obr);

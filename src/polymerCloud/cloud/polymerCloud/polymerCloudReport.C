@@ -19,7 +19,7 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::polymerCloud::writeProcessorLoads(Ostream& os) const
+void Foam::polymer::polymerCloud::writeProcessorLoads(Ostream& os) const
 {
     // A processor's exchange time includes its waits for the others: the
     // busiest one waits least
@@ -48,7 +48,7 @@ void Foam::polymerCloud::writeProcessorLoads(Ostream& os) const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::polymerCloud::writeSummary(Ostream& os) const
+void Foam::polymer::polymerCloud::writeSummary(Ostream& os) const
 {
     // Chains per type, over all processors
     labelList nChainsOfType(types_.size(), Zero);
@@ -99,7 +99,7 @@ void Foam::polymerCloud::writeSummary(Ostream& os) const
 }
 
 
-void Foam::polymerCloud::writeReport(Ostream& os) const
+void Foam::polymer::polymerCloud::writeReport(Ostream& os) const
 {
     const scalar seconds = returnReduce(evolveSeconds_, maxOp<scalar>());
     const scalar beadSteps = returnReduce(beadSteps_, sumOp<scalar>());

@@ -25,7 +25,7 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::polymerCloud::readChainTypes()
+void Foam::polymer::polymerCloud::readChainTypes()
 {
     const dictionary& typesDict = checkedInput::subDict
     (
@@ -59,7 +59,7 @@ void Foam::polymerCloud::readChainTypes()
 }
 
 
-void Foam::polymerCloud::readCloudFunctions()
+void Foam::polymer::polymerCloud::readCloudFunctions()
 {
     const dictionary* dictPtr =
         properties_.findDict("cloudFunctions", keyType::LITERAL);
@@ -87,7 +87,7 @@ void Foam::polymerCloud::readCloudFunctions()
 }
 
 
-void Foam::polymerCloud::readForces(const dictionary& subModels)
+void Foam::polymer::polymerCloud::readForces(const dictionary& subModels)
 {
     const wordList names
     (
@@ -101,7 +101,7 @@ void Foam::polymerCloud::readForces(const dictionary& subModels)
 }
 
 
-void Foam::polymerCloud::initialise()
+void Foam::polymer::polymerCloud::initialise()
 {
     const dictionary& subModels = properties_.subDict("subModels");
 
@@ -128,7 +128,7 @@ void Foam::polymerCloud::initialise()
 }
 
 
-void Foam::polymerCloud::setThermalVelocities(const label firstChain)
+void Foam::polymer::polymerCloud::setThermalVelocities(const label firstChain)
 {
     List<vector>& v = chains_.velocities();
 
@@ -166,7 +166,7 @@ void Foam::polymerCloud::setThermalVelocities(const label firstChain)
 }
 
 
-void Foam::polymerCloud::checkRods(const fileName& origin) const
+void Foam::polymer::polymerCloud::checkRods(const fileName& origin) const
 {
     for (label c = 0; c < chains_.nChains(); ++c)
     {
@@ -188,7 +188,7 @@ void Foam::polymerCloud::checkRods(const fileName& origin) const
 }
 
 
-void Foam::polymerCloud::checkInsideMesh(const fileName& origin) const
+void Foam::polymer::polymerCloud::checkInsideMesh(const fileName& origin) const
 {
     // Every processor holds every new chain: each searches only the beads
     // in its part of the mesh (collective)
@@ -214,7 +214,7 @@ void Foam::polymerCloud::checkInsideMesh(const fileName& origin) const
 }
 
 
-void Foam::polymerCloud::attachModels()
+void Foam::polymer::polymerCloud::attachModels()
 {
     models_.clear();
     models_.append(flow_.get());
@@ -235,7 +235,7 @@ void Foam::polymerCloud::attachModels()
 }
 
 
-void Foam::polymerCloud::selectModels(const dictionary& subModels)
+void Foam::polymer::polymerCloud::selectModels(const dictionary& subModels)
 {
     flow_ = flowModel::New(subModels, mesh_);
     readForces(subModels);
@@ -298,7 +298,8 @@ void Foam::polymerCloud::selectModels(const dictionary& subModels)
 }
 
 
-void Foam::polymerCloud::checkParallelSupport(const dictionary& subModels)
+void
+Foam::polymer::polymerCloud::checkParallelSupport(const dictionary& subModels)
 {
     if (!Pstream::parRun())
     {
@@ -341,7 +342,7 @@ void Foam::polymerCloud::checkParallelSupport(const dictionary& subModels)
 }
 
 
-bool Foam::polymerCloud::startChains(const dictionary& subModels)
+bool Foam::polymer::polymerCloud::startChains(const dictionary& subModels)
 {
     // Every processor of a parallel run restarts, or none does; a parallel
     // run may continue a serial one from the undecomposed case's chains

@@ -15,7 +15,10 @@ License
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::polymerCloudSolution::polymerCloudSolution(const dictionary& properties)
+Foam::polymer::polymerCloudSolution::polymerCloudSolution
+(
+    const dictionary& properties
+)
 :
     active_
     (

@@ -11,7 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "polymerCoupling.H"
-#include "fieldFlow.H"
+#include "field.H"
 #include "checkedInput.H"
 #include "fvmSup.H"
 #include "PstreamBuffers.H"
@@ -24,7 +24,7 @@ namespace
 
 // The coefficients the coupling is read from: the field flow's (two-way
 // coupling needs a solved flow), none for other flows
-const Foam::dictionary& couplingCoeffs(const Foam::flowModel& flow)
+const Foam::dictionary& couplingCoeffs(const Foam::polymer::flowModel& flow)
 {
     return flow.solvesFlow() ? flow.coeffDict() : Foam::dictionary::null;
 }
@@ -34,13 +34,15 @@ const Foam::dictionary& couplingCoeffs(const Foam::flowModel& flow)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-const Foam::flowModels::fieldFlow& Foam::polymerCoupling::field() const
+const Foam::polymer::flowModels::field&
+Foam::polymer::polymerCoupling::solvedFlow() const
 {
-    return refCast<const flowModels::fieldFlow>(flow_);
+    return refCast<const flowModels::field>(flow_);
 }
 
 
-void Foam::polymerCoupling::checkSettings(const dictionary& coeffs) const
+void
+Foam::polymer::polymerCoupling::checkSettings(const dictionary& coeffs) const
 {
     const word coupling =
         coeffs.getOrDefault<word>("coupling", "oneWay");
@@ -65,7 +67,7 @@ void Foam::polymerCoupling::checkSettings(const dictionary& coeffs) const
 
     // OpenFOAM's CrankNicolson keeps the old time derivative between
     // steps, which the second solve of a step corrupts
-    const word ddtU("ddt(" + field().UName() + ")");
+    const word ddtU("ddt(" + solvedFlow().UName() + ")");
     const ITstream& ddtScheme = mesh_.ddtScheme(ddtU);
     if
     (
@@ -84,7 +86,7 @@ void Foam::polymerCoupling::checkSettings(const dictionary& coeffs) const
 }
 
 
-void Foam::polymerCoupling::depositRemote
+void Foam::polymer::polymerCoupling::depositRemote
 (
     const List<DynamicList<label>>& cells,
     const List<DynamicList<vector>>& transfer,
@@ -103,7 +105,8 @@ void Foam::polymerCoupling::depositRemote
     labelList recvSizes;
     buffers.finishedSends(recvSizes);
 
-    const volVectorField& U = mesh_.lookupObject<volVectorField>(field().UName());
+    const volVectorField& U =
+        mesh_.lookupObject<volVectorField>(solvedFlow().UName());
     forAll(recvSizes, proci)
     {
         if (!recvSizes[proci])
@@ -125,7 +128,7 @@ void Foam::polymerCoupling::depositRemote
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::polymerCoupling::polymerCoupling
+Foam::polymer::polymerCoupling::polymerCoupling
 (
     const fvMesh& mesh,
     const flowModel& flow
@@ -194,7 +197,7 @@ Foam::polymerCoupling::polymerCoupling
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::polymerCoupling::deposit
+void Foam::polymer::polymerCoupling::deposit
 (
     const polymerChains& chains,
     const UList<vector>& velocityChange,
@@ -210,7 +213,8 @@ void Foam::polymerCoupling::deposit
         return;
     }
 
-    const volVectorField& U = mesh_.lookupObject<volVectorField>(field().UName());
+    const volVectorField& U =
+        mesh_.lookupObject<volVectorField>(solvedFlow().UName());
 
     // Beads in other processors' meshes: their momentum goes there
     const label nProcs = Pstream::nProcs();
@@ -235,15 +239,15 @@ void Foam::polymerCoupling::deposit
                 transfer += force[i]*deltaT;
             }
 
-            const label celli = field().sampler().hostTets()[i].cell();
+            const label celli = solvedFlow().sampler().hostTets()[i].cell();
             if (celli < 0)
             {
-                const label proci = field().sampler().remoteOwners()[i];
+                const label proci = solvedFlow().sampler().remoteOwners()[i];
                 if (proci >= 0)
                 {
                     remoteCell[proci].append
                     (
-                        field().sampler().remoteTets()[i].cell()
+                        solvedFlow().sampler().remoteTets()[i].cell()
                     );
                     remoteTransfer[proci].append(transfer);
                     remoteCoeff[proci].append(coeff);
@@ -269,7 +273,7 @@ void Foam::polymerCoupling::deposit
 }
 
 
-Foam::tmp<Foam::fvVectorMatrix> Foam::polymerCoupling::SU
+Foam::tmp<Foam::fvVectorMatrix> Foam::polymer::polymerCoupling::SU
 (
     volVectorField& U
 ) const

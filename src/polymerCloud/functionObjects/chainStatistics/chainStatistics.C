@@ -23,6 +23,8 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace cloudFunctions
 {
     defineTypeNameAndDebug(chainStatistics, 0);
@@ -33,12 +35,13 @@ namespace cloudFunctions
         dictionary
     );
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::cloudFunctions::chainStatistics::openFile()
+void Foam::polymer::cloudFunctions::chainStatistics::openFile()
 {
     const Time& runTime = cloud_.mesh().time();
     const fileName dir
@@ -59,7 +62,8 @@ void Foam::cloudFunctions::chainStatistics::openFile()
 }
 
 
-Foam::scalar Foam::cloudFunctions::chainStatistics::peculiarKineticEnergy
+Foam::scalar
+Foam::polymer::cloudFunctions::chainStatistics::peculiarKineticEnergy
 (
     const label chaini
 ) const
@@ -81,7 +85,7 @@ Foam::scalar Foam::cloudFunctions::chainStatistics::peculiarKineticEnergy
 }
 
 
-Foam::label Foam::cloudFunctions::chainStatistics::rodsOutside() const
+Foam::label Foam::polymer::cloudFunctions::chainStatistics::rodsOutside() const
 {
     // Both beads of a rod can be in the fluid while the rod cuts a
     // non-convex corner (a step, a post): its midpoint then lies outside
@@ -124,7 +128,7 @@ Foam::label Foam::cloudFunctions::chainStatistics::rodsOutside() const
 }
 
 
-void Foam::cloudFunctions::chainStatistics::writeLine()
+void Foam::polymer::cloudFunctions::chainStatistics::writeLine()
 {
     const polymerChains& chains = cloud_.chains();
 
@@ -199,7 +203,7 @@ void Foam::cloudFunctions::chainStatistics::writeLine()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cloudFunctions::chainStatistics::chainStatistics
+Foam::polymer::cloudFunctions::chainStatistics::chainStatistics
 (
     const word& name,
     const dictionary& dict,
@@ -234,7 +238,7 @@ Foam::cloudFunctions::chainStatistics::chainStatistics
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cloudFunctions::chainStatistics::postConstrain
+void Foam::polymer::cloudFunctions::chainStatistics::postConstrain
 (
     const scalar deltaT
 )
@@ -253,7 +257,7 @@ void Foam::cloudFunctions::chainStatistics::postConstrain
 }
 
 
-void Foam::cloudFunctions::chainStatistics::postEvolve()
+void Foam::polymer::cloudFunctions::chainStatistics::postEvolve()
 {
     if (++stepsSinceLine_ >= interval_)
     {

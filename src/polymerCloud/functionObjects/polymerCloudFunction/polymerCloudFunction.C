@@ -16,14 +16,17 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(polymerCloudFunction, 0);
     defineRunTimeSelectionTable(polymerCloudFunction, dictionary);
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::polymerCloudFunction::polymerCloudFunction
+Foam::polymer::polymerCloudFunction::polymerCloudFunction
 (
     const word& name,
     const polymerCloud& cloud
@@ -36,7 +39,8 @@ Foam::polymerCloudFunction::polymerCloudFunction
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::polymerCloudFunction> Foam::polymerCloudFunction::New
+Foam::autoPtr<Foam::polymer::polymerCloudFunction>
+Foam::polymer::polymerCloudFunction::New
 (
     const word& name,
     const dictionary& dict,

@@ -21,17 +21,21 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace cloudFunctions
 {
     defineTypeNameAndDebug(polymerStress, 0);
     addToRunTimeSelectionTable(polymerCloudFunction, polymerStress, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::cloudFunctions::polymerStress::standardErrorXY() const
+Foam::scalar
+Foam::polymer::cloudFunctions::polymerStress::standardErrorXY() const
 {
     const label n = blockMeansXY_.size();
     if (n < 2)
@@ -54,7 +58,7 @@ Foam::scalar Foam::cloudFunctions::polymerStress::standardErrorXY() const
 
 
 Foam::autoPtr<Foam::volSymmTensorField>
-Foam::cloudFunctions::polymerStress::newField(const word& name) const
+Foam::polymer::cloudFunctions::polymerStress::newField(const word& name) const
 {
     const fvMesh& mesh = cloud_.mesh();
     return autoPtr<volSymmTensorField>::New
@@ -73,7 +77,7 @@ Foam::cloudFunctions::polymerStress::newField(const word& name) const
 }
 
 
-void Foam::cloudFunctions::polymerStress::addToFields
+void Foam::polymer::cloudFunctions::polymerStress::addToFields
 (
     const UList<symmTensor>& beadTerm
 )
@@ -95,7 +99,7 @@ void Foam::cloudFunctions::polymerStress::addToFields
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cloudFunctions::polymerStress::polymerStress
+Foam::polymer::cloudFunctions::polymerStress::polymerStress
 (
     const word& name,
     const dictionary& dict,
@@ -162,7 +166,7 @@ Foam::cloudFunctions::polymerStress::polymerStress
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cloudFunctions::polymerStress::postIntegrate
+void Foam::polymer::cloudFunctions::polymerStress::postIntegrate
 (
     const UList<vector>& positionsOld,
     const UList<vector>& velocitiesOld,
@@ -177,7 +181,8 @@ void Foam::cloudFunctions::polymerStress::postIntegrate
 }
 
 
-void Foam::cloudFunctions::polymerStress::postConstrain(const scalar deltaT)
+void
+Foam::polymer::cloudFunctions::polymerStress::postConstrain(const scalar deltaT)
 {
     if (cloud_.mesh().time().value() <= start_)
     {
@@ -239,7 +244,7 @@ void Foam::cloudFunctions::polymerStress::postConstrain(const scalar deltaT)
 }
 
 
-void Foam::cloudFunctions::polymerStress::postEvolve()
+void Foam::polymer::cloudFunctions::polymerStress::postEvolve()
 {
     if (!nSteps_ || nSteps_ % interval_ || !Pstream::master())
     {

@@ -22,17 +22,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace cloudFunctions
 {
     defineTypeNameAndDebug(vtkChains, 0);
     addToRunTimeSelectionTable(polymerCloudFunction, vtkChains, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::cloudFunctions::vtkChains::writeLines
+void Foam::polymer::cloudFunctions::vtkChains::writeLines
 (
     vtk::formatter& format,
     const polymerChains& chains
@@ -74,7 +77,7 @@ void Foam::cloudFunctions::vtkChains::writeLines
 }
 
 
-void Foam::cloudFunctions::vtkChains::writeFile
+void Foam::polymer::cloudFunctions::vtkChains::writeFile
 (
     const fileName& file,
     const polymerChains& chains
@@ -149,7 +152,7 @@ void Foam::cloudFunctions::vtkChains::writeFile
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cloudFunctions::vtkChains::vtkChains
+Foam::polymer::cloudFunctions::vtkChains::vtkChains
 (
     const word& name,
     const dictionary& dict,
@@ -170,7 +173,7 @@ Foam::cloudFunctions::vtkChains::vtkChains
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cloudFunctions::vtkChains::write()
+void Foam::polymer::cloudFunctions::vtkChains::write()
 {
     // Every processor's chains, written by the master (a serial run's
     // need no copy)

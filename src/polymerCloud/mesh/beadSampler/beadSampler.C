@@ -26,6 +26,7 @@ Foam::List<Foam::DynamicList<Foam::label>> byProcessor
 )
 {
     using namespace Foam;
+    using namespace Foam::polymer;
 
     List<DynamicList<label>> requests(Pstream::nProcs());
     forAll(proc, j)
@@ -39,6 +40,7 @@ Foam::List<Foam::DynamicList<Foam::label>> byProcessor
 void writeTets(Foam::Ostream& os, const Foam::UList<Foam::tetIndices>& tets)
 {
     using namespace Foam;
+    using namespace Foam::polymer;
 
     labelList cells(tets.size());
     labelList faces(tets.size());
@@ -56,6 +58,7 @@ void writeTets(Foam::Ostream& os, const Foam::UList<Foam::tetIndices>& tets)
 Foam::List<Foam::tetIndices> readTets(Foam::Istream& is)
 {
     using namespace Foam;
+    using namespace Foam::polymer;
 
     const labelList cells(is);
     const labelList faces(is);
@@ -73,7 +76,7 @@ Foam::List<Foam::tetIndices> readTets(Foam::Istream& is)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::beadSampler::beadSampler(const fvMesh& mesh)
+Foam::polymer::beadSampler::beadSampler(const fvMesh& mesh)
 :
     mesh_(mesh),
     locator_(cellLocator::New(mesh)),
@@ -95,7 +98,7 @@ Foam::beadSampler::beadSampler(const fvMesh& mesh)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::List<Foam::tetIndices> Foam::beadSampler::askTets
+Foam::List<Foam::tetIndices> Foam::polymer::beadSampler::askTets
 (
     const labelUList& beads,
     const UList<point>& points,
@@ -173,7 +176,7 @@ Foam::List<Foam::tetIndices> Foam::beadSampler::askTets
 }
 
 
-void Foam::beadSampler::locateRemote
+void Foam::polymer::beadSampler::locateRemote
 (
     labelList& owner,
     List<tetIndices>& tet
@@ -236,7 +239,7 @@ void Foam::beadSampler::locateRemote
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::beadSampler::locate(const polymerChains& chains)
+void Foam::polymer::beadSampler::locate(const polymerChains& chains)
 {
     const List<vector>& x = chains.positions();
     List<tetIndices>& hostTet = hostTets_.update(chains);
@@ -291,7 +294,7 @@ void Foam::beadSampler::locate(const polymerChains& chains)
 }
 
 
-void Foam::beadSampler::sample
+void Foam::polymer::beadSampler::sample
 (
     const interpolation<vector>& field,
     UList<vector>& values

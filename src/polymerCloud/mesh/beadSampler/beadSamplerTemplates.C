@@ -17,7 +17,7 @@ License
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class Type>
-void Foam::beadSampler::addToCells
+void Foam::polymer::beadSampler::addToCells
 (
     const UList<Type>& values,
     Field<Type>& cellValues

@@ -71,6 +71,7 @@ void appendFace
 )
 {
     using namespace Foam;
+    using namespace Foam::polymer;
 
     face f(facePoints.size());
     forAll(facePoints, k)
@@ -89,7 +90,7 @@ void appendFace
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::boundaryFaces::addOwnFaces(const polyMesh& mesh)
+void Foam::polymer::boundaryFaces::addOwnFaces(const polyMesh& mesh)
 {
     DynamicList<point> points;
     DynamicList<face> faces;
@@ -131,7 +132,8 @@ void Foam::boundaryFaces::addOwnFaces(const polyMesh& mesh)
 }
 
 
-void Foam::boundaryFaces::addHalo(const polyMesh& mesh, const scalar reach)
+void
+Foam::polymer::boundaryFaces::addHalo(const polyMesh& mesh, const scalar reach)
 {
     if (!Pstream::parRun())
     {
@@ -222,7 +224,7 @@ void Foam::boundaryFaces::addHalo(const polyMesh& mesh, const scalar reach)
 }
 
 
-void Foam::boundaryFaces::buildTree()
+void Foam::polymer::boundaryFaces::buildTree()
 {
     if (faces_.empty())
     {
@@ -254,7 +256,11 @@ void Foam::boundaryFaces::buildTree()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::boundaryFaces::boundaryFaces(const polyMesh& mesh, const scalar reach)
+Foam::polymer::boundaryFaces::boundaryFaces
+(
+    const polyMesh& mesh,
+    const scalar reach
+)
 :
     points_(),
     faces_(),
@@ -272,7 +278,7 @@ Foam::boundaryFaces::boundaryFaces(const polyMesh& mesh, const scalar reach)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::pointIndexHit Foam::boundaryFaces::firstEntered
+Foam::pointIndexHit Foam::polymer::boundaryFaces::firstEntered
 (
     const point& start,
     const point& end

@@ -17,13 +17,16 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(cellLocator, 0);
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::cellLocator::boxedCells::boxedCells
+Foam::polymer::cellLocator::boxedCells::boxedCells
 (
     const polyMesh& mesh,
     const List<treeBoundBox>& boxes
@@ -34,7 +37,7 @@ Foam::cellLocator::boxedCells::boxedCells
 {}
 
 
-Foam::cellLocator::cellLocator(const polyMesh& mesh)
+Foam::polymer::cellLocator::cellLocator(const polyMesh& mesh)
 :
     MeshObject<polyMesh, GeometricMeshObject, cellLocator>(mesh),
     boxes_(mesh.nCells()),
@@ -61,7 +64,7 @@ Foam::cellLocator::cellLocator(const polyMesh& mesh)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-bool Foam::cellLocator::inTet
+bool Foam::polymer::cellLocator::inTet
 (
     const polyMesh& mesh,
     const point& p,
@@ -80,7 +83,7 @@ bool Foam::cellLocator::inTet
 }
 
 
-bool Foam::cellLocator::isTetOf
+bool Foam::polymer::cellLocator::isTetOf
 (
     const polyMesh& mesh,
     const tetIndices& tet,
@@ -104,7 +107,7 @@ bool Foam::cellLocator::isTetOf
 }
 
 
-bool Foam::cellLocator::inTets
+bool Foam::polymer::cellLocator::inTets
 (
     const polyMesh& mesh,
     const point& p,
@@ -143,7 +146,7 @@ bool Foam::cellLocator::inTets
 }
 
 
-bool Foam::cellLocator::inCell
+bool Foam::polymer::cellLocator::inCell
 (
     const point& p,
     const label celli,
@@ -157,7 +160,7 @@ bool Foam::cellLocator::inCell
 }
 
 
-Foam::label Foam::cellLocator::walk
+Foam::label Foam::polymer::cellLocator::walk
 (
     const point& p,
     label celli,
@@ -207,8 +210,8 @@ Foam::label Foam::cellLocator::walk
 }
 
 
-const Foam::indexedOctree<Foam::cellLocator::boxedCells>&
-Foam::cellLocator::tree() const
+const Foam::indexedOctree<Foam::polymer::cellLocator::boxedCells>&
+Foam::polymer::cellLocator::tree() const
 {
     if (!tree_.valid())
     {
@@ -237,13 +240,13 @@ Foam::cellLocator::tree() const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::cellLocator::findCell(const point& p) const
+Foam::label Foam::polymer::cellLocator::findCell(const point& p) const
 {
     return mesh().bounds().contains(p) ? tree().findInside(p) : -1;
 }
 
 
-Foam::label Foam::cellLocator::findCell
+Foam::label Foam::polymer::cellLocator::findCell
 (
     const point& p,
     const label previousCell
@@ -254,7 +257,7 @@ Foam::label Foam::cellLocator::findCell
 }
 
 
-Foam::tetIndices Foam::cellLocator::findTet
+Foam::tetIndices Foam::polymer::cellLocator::findTet
 (
     const point& p,
     const label previousCell,
@@ -265,7 +268,7 @@ Foam::tetIndices Foam::cellLocator::findTet
 }
 
 
-Foam::tetIndices Foam::cellLocator::findTet
+Foam::tetIndices Foam::polymer::cellLocator::findTet
 (
     const point& p,
     const tetIndices& previous,

@@ -19,13 +19,16 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(periodicImages, 0);
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::periodicImages::patchFaces
+void Foam::polymer::periodicImages::patchFaces
 (
     const label patchi,
     vectorField& areas,
@@ -54,7 +57,7 @@ void Foam::periodicImages::patchFaces
 }
 
 
-Foam::point Foam::periodicImages::centroid
+Foam::point Foam::polymer::periodicImages::centroid
 (
     const vectorField& areas,
     const pointField& centres
@@ -64,7 +67,7 @@ Foam::point Foam::periodicImages::centroid
 }
 
 
-void Foam::periodicImages::addPatch(const label patchi)
+void Foam::polymer::periodicImages::addPatch(const label patchi)
 {
     const cyclicPolyPatch& patch =
         refCast<const cyclicPolyPatch>(mesh().boundaryMesh()[patchi]);
@@ -136,7 +139,7 @@ void Foam::periodicImages::addPatch(const label patchi)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::periodicImages::periodicImages(const polyMesh& mesh)
+Foam::polymer::periodicImages::periodicImages(const polyMesh& mesh)
 :
     MeshObject<polyMesh, GeometricMeshObject, periodicImages>(mesh),
     planePoint_(),
@@ -177,7 +180,7 @@ Foam::periodicImages::periodicImages(const polyMesh& mesh)
 
 // * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
-Foam::vector Foam::periodicImages::shift(const point& p) const
+Foam::vector Foam::polymer::periodicImages::shift(const point& p) const
 {
     // A point beyond several planes (a corner) needs a pass per plane; a
     // point many periods away needs more: stop after a generous number
@@ -202,7 +205,7 @@ Foam::vector Foam::periodicImages::shift(const point& p) const
 }
 
 
-bool Foam::periodicImages::overlapsImage
+bool Foam::polymer::periodicImages::overlapsImage
 (
     const boundBox& a,
     const boundBox& b

@@ -27,6 +27,7 @@ Foam::labelList claims
 )
 {
     using namespace Foam;
+    using namespace Foam::polymer;
 
     const cellLocator& locator = cellLocator::New(mesh);
     labelList claim(points.size(), labelMax);
@@ -45,6 +46,7 @@ Foam::labelList claims
 void lowestClaims(Foam::labelList& claim)
 {
     using namespace Foam;
+    using namespace Foam::polymer;
 
     if (Pstream::parRun())
     {
@@ -65,7 +67,7 @@ void lowestClaims(Foam::labelList& claim)
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
-Foam::labelList Foam::pointOwners
+Foam::labelList Foam::polymer::pointOwners
 (
     const polyMesh& mesh,
     const UList<point>& points
@@ -104,7 +106,7 @@ Foam::labelList Foam::pointOwners
 }
 
 
-Foam::labelList Foam::replicatedPointOwners
+Foam::labelList Foam::polymer::replicatedPointOwners
 (
     const polyMesh& mesh,
     const UList<point>& points

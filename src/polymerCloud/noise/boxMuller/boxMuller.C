@@ -45,6 +45,8 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 
 // Bit copies between a double and its 64-bit pattern (memcpy: no aliasing
 // issue, and the compiler turns it into a register move)
@@ -160,13 +162,14 @@ static inline void sinCosTurn(const double u, double& s, double& c)
     c = fromBits((cosBits ^ swap) ^ (((qBits + 1) & 2) << 62));
 }
 
+} // End namespace polymer
 } // End namespace Foam
 
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
 BOX_MULLER_TARGETS
-void Foam::boxMuller::transform(const label nPairs, scalar* u)
+void Foam::polymer::boxMuller::transform(const label nPairs, scalar* u)
 {
     // One pair after another, with no dependence between them: the
     // compiler vectorises the loop (-O3; -fno-math-errno for sqrt)

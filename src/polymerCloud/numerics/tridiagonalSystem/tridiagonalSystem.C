@@ -14,7 +14,7 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-bool Foam::tridiagonalSystem::eliminate(UList<scalar>& rhs)
+bool Foam::polymer::tridiagonalSystem::eliminate(UList<scalar>& rhs)
 {
     const label n = diagonal_.size();
     const label m = middle();
@@ -91,7 +91,8 @@ bool Foam::tridiagonalSystem::eliminate(UList<scalar>& rhs)
 }
 
 
-void Foam::tridiagonalSystem::forwardSubstitute(UList<scalar>& rhs) const
+void
+Foam::polymer::tridiagonalSystem::forwardSubstitute(UList<scalar>& rhs) const
 {
     const label n = diagonal_.size();
     const label m = middle();
@@ -128,7 +129,7 @@ void Foam::tridiagonalSystem::forwardSubstitute(UList<scalar>& rhs) const
 }
 
 
-void Foam::tridiagonalSystem::backSubstitute(UList<scalar>& rhs) const
+void Foam::polymer::tridiagonalSystem::backSubstitute(UList<scalar>& rhs) const
 {
     const label n = diagonal_.size();
     const label m = middle();
@@ -158,7 +159,7 @@ void Foam::tridiagonalSystem::backSubstitute(UList<scalar>& rhs) const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::tridiagonalSystem::resize(const label n)
+void Foam::polymer::tridiagonalSystem::resize(const label n)
 {
     lower_.resize(n);
     diagonal_.resize(n);
@@ -169,7 +170,7 @@ void Foam::tridiagonalSystem::resize(const label n)
 }
 
 
-bool Foam::tridiagonalSystem::solve(const bool cyclic)
+bool Foam::polymer::tridiagonalSystem::solve(const bool cyclic)
 {
     const label n = diagonal_.size();
 

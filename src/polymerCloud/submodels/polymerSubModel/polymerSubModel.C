@@ -29,7 +29,10 @@ const Foam::dictionary& coefficients
     const Foam::word keyword(modelType + "Coeffs");
     if (!requiredCoeffs.empty())
     {
-        return Foam::checkedInput::subDict(dict, keyword, requiredCoeffs);
+        return Foam::polymer::checkedInput::subDict
+        (
+            dict, keyword, requiredCoeffs
+        );
     }
     return dict.optionalSubDict(keyword);
 }
@@ -39,7 +42,7 @@ const Foam::dictionary& coefficients
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::polymerSubModel::polymerSubModel
+Foam::polymer::polymerSubModel::polymerSubModel
 (
     const word& modelType,
     const dictionary& dict,
@@ -54,7 +57,7 @@ Foam::polymerSubModel::polymerSubModel
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-const Foam::polymerCloud& Foam::polymerSubModel::owner() const
+const Foam::polymer::polymerCloud& Foam::polymer::polymerSubModel::owner() const
 {
     if (!owner_)
     {

@@ -15,7 +15,7 @@ License
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
 template<class Model, class... Args>
-Foam::autoPtr<Model> Foam::polymerSubModel::select
+Foam::autoPtr<Model> Foam::polymer::polymerSubModel::select
 (
     const dictionary& dict,
     const word& keyword,
@@ -38,7 +38,7 @@ Foam::autoPtr<Model> Foam::polymerSubModel::select
 
 
 template<class Model, class... Args>
-Foam::autoPtr<Model> Foam::polymerSubModel::selectNamed
+Foam::autoPtr<Model> Foam::polymer::polymerSubModel::selectNamed
 (
     const word& modelType,
     const dictionary& dict,

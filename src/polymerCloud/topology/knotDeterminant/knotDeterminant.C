@@ -95,7 +95,7 @@ int64_t determinantModulo(std::vector<std::vector<int64_t>> a, int64_t p)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::knotDeterminant::compute
+Foam::label Foam::polymer::knotDeterminant::compute
 (
     const UList<point>& ring,
     const vector& direction,
@@ -254,7 +254,7 @@ Foam::label Foam::knotDeterminant::compute
 }
 
 
-Foam::label Foam::knotDeterminant::compute(const UList<point>& ring)
+Foam::label Foam::polymer::knotDeterminant::compute(const UList<point>& ring)
 {
     label nCrossings;
     return compute(ring, vector(0.3129, 0.4561, 0.8331), nCrossings);

@@ -61,7 +61,7 @@ inline vec at(const vec& a, const vec& b, const real t)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::rodCrossingAudit::rodCrossingAudit(const List<labelPair>& rods)
+Foam::polymer::rodCrossingAudit::rodCrossingAudit(const List<labelPair>& rods)
 :
     rods_(rods)
 {}
@@ -184,7 +184,7 @@ void pairPiece::roots(Foam::DynamicList<std::pair<real, int>>& found) const
 } // End anonymous namespace
 
 
-void Foam::rodCrossingAudit::checkPair
+void Foam::polymer::rodCrossingAudit::checkPair
 (
     const labelPair& a,
     const labelPair& b,
@@ -267,7 +267,8 @@ void Foam::rodCrossingAudit::checkPair
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::List<Foam::rodCrossingAudit::crossing> Foam::rodCrossingAudit::check
+Foam::List<Foam::polymer::rodCrossingAudit::crossing>
+Foam::polymer::rodCrossingAudit::check
 (
     const UList<List<point>>& path
 ) const
@@ -329,7 +330,8 @@ Foam::List<Foam::rodCrossingAudit::crossing> Foam::rodCrossingAudit::check
 }
 
 
-Foam::List<Foam::rodCrossingAudit::crossing> Foam::rodCrossingAudit::check
+Foam::List<Foam::polymer::rodCrossingAudit::crossing>
+Foam::polymer::rodCrossingAudit::check
 (
     const UList<point>& start,
     const UList<point>& end

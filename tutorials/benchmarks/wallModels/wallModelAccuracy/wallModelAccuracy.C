@@ -57,6 +57,7 @@ Usage
 #include <cstdio>
 
 using namespace Foam;
+using namespace Foam::polymer;
 
 namespace
 {

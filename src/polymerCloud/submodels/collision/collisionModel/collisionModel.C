@@ -16,14 +16,17 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(collisionModel, 0);
     defineRunTimeSelectionTable(collisionModel, dictionary);
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::collisionModel::collisionModel
+Foam::polymer::collisionModel::collisionModel
 (
     const word& type,
     const dictionary& dict
@@ -35,7 +38,7 @@ Foam::collisionModel::collisionModel
 
 // * * * * * * * * * * * * * * * * * Report  * * * * * * * * * * * * * * * * //
 
-void Foam::collisionModel::writeReport(Ostream& os) const
+void Foam::polymer::collisionModel::writeReport(Ostream& os) const
 {
     const collisionCounters total = totalCounters_.reduced();
 

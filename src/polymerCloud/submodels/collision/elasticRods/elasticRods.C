@@ -21,17 +21,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace collisionModels
 {
     defineTypeNameAndDebug(elasticRods, 0);
     addToRunTimeSelectionTable(collisionModel, elasticRods, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::collisionModels::elasticRods::elasticRods(const dictionary& dict)
+Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
 :
     collisionModel(typeName, dict),
     rootSolver_
@@ -77,7 +80,7 @@ Foam::collisionModels::elasticRods::elasticRods(const dictionary& dict)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-inline Foam::vector Foam::collisionModels::elasticRods::positionAt
+inline Foam::vector Foam::polymer::collisionModels::elasticRods::positionAt
 (
     const label bead,
     const scalar t
@@ -87,7 +90,7 @@ inline Foam::vector Foam::collisionModels::elasticRods::positionAt
 }
 
 
-Foam::boundBox Foam::collisionModels::elasticRods::sweep
+Foam::boundBox Foam::polymer::collisionModels::elasticRods::sweep
 (
     const label rod,
     const scalar t,
@@ -102,7 +105,7 @@ Foam::boundBox Foam::collisionModels::elasticRods::sweep
 }
 
 
-void Foam::collisionModels::elasticRods::predict
+void Foam::polymer::collisionModels::elasticRods::predict
 (
     const label pairi,
     const scalar t,
@@ -151,7 +154,7 @@ void Foam::collisionModels::elasticRods::predict
 }
 
 
-void Foam::collisionModels::elasticRods::predictWall
+void Foam::polymer::collisionModels::elasticRods::predictWall
 (
     const label bead,
     const scalar t,
@@ -177,7 +180,7 @@ void Foam::collisionModels::elasticRods::predictWall
 }
 
 
-void Foam::collisionModels::elasticRods::repredict
+void Foam::polymer::collisionModels::elasticRods::repredict
 (
     const label bead,
     const scalar t,
@@ -205,7 +208,7 @@ void Foam::collisionModels::elasticRods::repredict
 }
 
 
-void Foam::collisionModels::elasticRods::resolveWall
+void Foam::polymer::collisionModels::elasticRods::resolveWall
 (
     const event& e,
     UList<vector>& velocitiesDagger
@@ -227,7 +230,7 @@ void Foam::collisionModels::elasticRods::resolveWall
 }
 
 
-bool Foam::collisionModels::elasticRods::resolve
+bool Foam::polymer::collisionModels::elasticRods::resolve
 (
     const event& e,
     UList<vector>& velocitiesDagger
@@ -272,7 +275,7 @@ bool Foam::collisionModels::elasticRods::resolve
 }
 
 
-void Foam::collisionModels::elasticRods::snapshot(const scalar t)
+void Foam::polymer::collisionModels::elasticRods::snapshot(const scalar t)
 {
     List<point> positions(position_.size());
     forAll(positions, i)
@@ -283,7 +286,7 @@ void Foam::collisionModels::elasticRods::snapshot(const scalar t)
 }
 
 
-Foam::label Foam::collisionModels::elasticRods::auditStep
+Foam::label Foam::polymer::collisionModels::elasticRods::auditStep
 (
     const scalar time
 )
@@ -305,7 +308,7 @@ Foam::label Foam::collisionModels::elasticRods::auditStep
 }
 
 
-void Foam::collisionModels::elasticRods::reportStall
+void Foam::polymer::collisionModels::elasticRods::reportStall
 (
     const polymerChains& chains,
     const label pairi,
@@ -337,7 +340,7 @@ void Foam::collisionModels::elasticRods::reportStall
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::collisionModels::elasticRods::correct
+void Foam::polymer::collisionModels::elasticRods::correct
 (
     polymerChains& chains,
     const UList<vector>& positionsOld,

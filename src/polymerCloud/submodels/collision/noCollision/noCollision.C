@@ -17,17 +17,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace collisionModels
 {
     defineTypeNameAndDebug(noCollision, 0);
     addToRunTimeSelectionTable(collisionModel, noCollision, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::collisionModels::noCollision::noCollision(const dictionary& dict)
+Foam::polymer::collisionModels::noCollision::noCollision(const dictionary& dict)
 :
     collisionModel(typeName, dict)
 {}

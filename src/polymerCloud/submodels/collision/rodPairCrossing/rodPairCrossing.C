@@ -14,7 +14,7 @@ License
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::rodPairCrossing::rodPairCrossing
+Foam::polymer::rodPairCrossing::rodPairCrossing
 (
     const vector& xi, const vector& xi1,
     const vector& xj, const vector& xj1,
@@ -30,7 +30,7 @@ Foam::rodPairCrossing::rodPairCrossing
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::FixedList<Foam::scalar, 4>
-Foam::rodPairCrossing::tripleProductCubic() const
+Foam::polymer::rodPairCrossing::tripleProductCubic() const
 {
     // V(s) = (p + dp s).((b + db s) x (c + dc s))
     const vector p = x[0] - x[2];
@@ -55,7 +55,7 @@ Foam::rodPairCrossing::tripleProductCubic() const
 }
 
 
-Foam::scalar Foam::rodPairCrossing::tripleProduct(const scalar s) const
+Foam::scalar Foam::polymer::rodPairCrossing::tripleProduct(const scalar s) const
 {
     const vector p = (x[0] + s*v[0]) - (x[2] + s*v[2]);
     const vector b = (x[1] + s*v[1]) - (x[0] + s*v[0]);
@@ -64,7 +64,7 @@ Foam::scalar Foam::rodPairCrossing::tripleProduct(const scalar s) const
 }
 
 
-bool Foam::rodPairCrossing::intersection
+bool Foam::polymer::rodPairCrossing::intersection
 (
     const scalar s,
     scalar& lambdaI,
@@ -96,7 +96,7 @@ bool Foam::rodPairCrossing::intersection
 }
 
 
-bool Foam::rodPairCrossing::crossesAt(const scalar s) const
+bool Foam::polymer::rodPairCrossing::crossesAt(const scalar s) const
 {
     scalar lambdaI, lambdaJ;
     return
@@ -106,7 +106,7 @@ bool Foam::rodPairCrossing::crossesAt(const scalar s) const
 }
 
 
-bool Foam::rodPairCrossing::elasticImpulse
+bool Foam::polymer::rodPairCrossing::elasticImpulse
 (
     const scalar s,
     FixedList<vector, 4>& velocitiesAfter

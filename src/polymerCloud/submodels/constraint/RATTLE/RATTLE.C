@@ -18,17 +18,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace constraintModels
 {
     defineTypeNameAndDebug(RATTLE, 0);
     addToRunTimeSelectionTable(constraintModel, RATTLE, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::constraintModels::RATTLE::RATTLE(const dictionary& dict)
+Foam::polymer::constraintModels::RATTLE::RATTLE(const dictionary& dict)
 :
     SHAKE(typeName, dict),
     velocityTolerance_
@@ -46,7 +49,7 @@ Foam::constraintModels::RATTLE::RATTLE(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::constraintModels::RATTLE::correctChainVelocities
+Foam::label Foam::polymer::constraintModels::RATTLE::correctChainVelocities
 (
     polymerChains& chains,
     const label chaini,

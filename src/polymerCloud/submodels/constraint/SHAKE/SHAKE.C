@@ -18,15 +18,18 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace constraintModels
 {
     defineTypeNameAndDebug(SHAKE, 0);
     addToRunTimeSelectionTable(constraintModel, SHAKE, dictionary);
 }
+} // End namespace polymer
 }
 
-const Foam::Enum<Foam::constraintModels::SHAKE::directionType>
-Foam::constraintModels::SHAKE::directionTypeNames
+const Foam::Enum<Foam::polymer::constraintModels::SHAKE::directionType>
+Foam::polymer::constraintModels::SHAKE::directionTypeNames
 ({
     { directionType::start, "start" },
     { directionType::end, "end" },
@@ -35,13 +38,13 @@ Foam::constraintModels::SHAKE::directionTypeNames
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::constraintModels::SHAKE::SHAKE(const dictionary& dict)
+Foam::polymer::constraintModels::SHAKE::SHAKE(const dictionary& dict)
 :
     SHAKE(typeName, dict)
 {}
 
 
-Foam::constraintModels::SHAKE::SHAKE
+Foam::polymer::constraintModels::SHAKE::SHAKE
 (
     const word& type,
     const dictionary& dict
@@ -75,7 +78,7 @@ Foam::constraintModels::SHAKE::SHAKE
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
-const Foam::vector* Foam::constraintModels::SHAKE::directionSource
+const Foam::vector* Foam::polymer::constraintModels::SHAKE::directionSource
 (
     const polymerChains& chains,
     const label chaini,
@@ -99,7 +102,7 @@ const Foam::vector* Foam::constraintModels::SHAKE::directionSource
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::constraintModels::SHAKE::correctChainLengths
+Foam::label Foam::polymer::constraintModels::SHAKE::correctChainLengths
 (
     polymerChains& chains,
     const label chaini,

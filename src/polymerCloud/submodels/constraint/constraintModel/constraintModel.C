@@ -17,12 +17,15 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(constraintModel, 0);
     defineRunTimeSelectionTable(constraintModel, dictionary);
+} // End namespace polymer
 }
 
-const Foam::Enum<Foam::constraintModel::failureActionType>
-Foam::constraintModel::failureActionNames
+const Foam::Enum<Foam::polymer::constraintModel::failureActionType>
+Foam::polymer::constraintModel::failureActionNames
 ({
     { failureActionType::stop, "stop" },
     { failureActionType::subStep, "subStep" },
@@ -31,7 +34,7 @@ Foam::constraintModel::failureActionNames
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::constraintModel::constraintModel
+Foam::polymer::constraintModel::constraintModel
 (
     const word& type,
     const dictionary& dict
@@ -65,7 +68,7 @@ Foam::constraintModel::constraintModel
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
-void Foam::constraintModel::reportFailure
+void Foam::polymer::constraintModel::reportFailure
 (
     const polymerChains& chains,
     const label chaini,
@@ -109,7 +112,7 @@ void Foam::constraintModel::reportFailure
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::constraintModel::correctChain
+bool Foam::polymer::constraintModel::correctChain
 (
     polymerChains& chains,
     const label chaini,
@@ -151,7 +154,7 @@ bool Foam::constraintModel::correctChain
 }
 
 
-void Foam::constraintModel::correct
+void Foam::polymer::constraintModel::correct
 (
     polymerChains& chains,
     const UList<vector>& positionsOld,
@@ -170,7 +173,7 @@ void Foam::constraintModel::correct
 }
 
 
-void Foam::constraintModel::correct
+void Foam::polymer::constraintModel::correct
 (
     polymerChains& chains,
     const UList<vector>& positionsOld,
@@ -183,7 +186,7 @@ void Foam::constraintModel::correct
 }
 
 
-void Foam::constraintModel::correctVelocities
+void Foam::polymer::constraintModel::correctVelocities
 (
     polymerChains& chains,
     const scalar time
@@ -208,7 +211,7 @@ void Foam::constraintModel::correctVelocities
 
 // * * * * * * * * * * * * * * * * * Report  * * * * * * * * * * * * * * * * //
 
-void Foam::constraintModel::writeReport(Ostream& os) const
+void Foam::polymer::constraintModel::writeReport(Ostream& os) const
 {
     const constraintCounters total = totalCounters_.reduced();
 

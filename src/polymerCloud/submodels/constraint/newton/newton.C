@@ -18,17 +18,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace constraintModels
 {
     defineTypeNameAndDebug(newton, 0);
     addToRunTimeSelectionTable(constraintModel, newton, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::constraintModels::newton::newton(const dictionary& dict)
+Foam::polymer::constraintModels::newton::newton(const dictionary& dict)
 :
     constraintModel(typeName, dict),
     tolerance_
@@ -71,7 +74,7 @@ Foam::constraintModels::newton::newton(const dictionary& dict)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::constraintModels::newton::padRods
+void Foam::polymer::constraintModels::newton::padRods
 (
     const vector* x,
     const chainType& type,
@@ -92,7 +95,11 @@ void Foam::constraintModels::newton::padRods
 }
 
 
-void Foam::constraintModels::newton::padSolution(const chainType& type) const
+void
+Foam::polymer::constraintModels::newton::padSolution
+(
+    const chainType& type
+) const
 {
     const label nRods = type.nRods();
     const UList<scalar>& solution = system_.source();
@@ -107,7 +114,7 @@ void Foam::constraintModels::newton::padSolution(const chainType& type) const
 }
 
 
-Foam::scalar Foam::constraintModels::newton::linearise
+Foam::scalar Foam::polymer::constraintModels::newton::linearise
 (
     const vector* x,
     const chainType& type
@@ -142,7 +149,7 @@ Foam::scalar Foam::constraintModels::newton::linearise
 }
 
 
-void Foam::constraintModels::newton::shift
+void Foam::polymer::constraintModels::newton::shift
 (
     vector* x,
     const chainType& type,
@@ -166,7 +173,7 @@ void Foam::constraintModels::newton::shift
 }
 
 
-Foam::scalar Foam::constraintModels::newton::kick
+Foam::scalar Foam::polymer::constraintModels::newton::kick
 (
     vector* v,
     const chainType& type
@@ -196,7 +203,7 @@ Foam::scalar Foam::constraintModels::newton::kick
 }
 
 
-Foam::scalar Foam::constraintModels::newton::lineSearch
+Foam::scalar Foam::polymer::constraintModels::newton::lineSearch
 (
     vector* x,
     const chainType& type,
@@ -222,7 +229,7 @@ Foam::scalar Foam::constraintModels::newton::lineSearch
 }
 
 
-Foam::label Foam::constraintModels::newton::solveLengths
+Foam::label Foam::polymer::constraintModels::newton::solveLengths
 (
     vector* x,
     const chainType& type,
@@ -262,7 +269,7 @@ Foam::label Foam::constraintModels::newton::solveLengths
 }
 
 
-Foam::label Foam::constraintModels::newton::iterate
+Foam::label Foam::polymer::constraintModels::newton::iterate
 (
     polymerChains& chains,
     const label chaini,
@@ -302,7 +309,7 @@ Foam::label Foam::constraintModels::newton::iterate
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::constraintModels::newton::correctChainLengths
+Foam::label Foam::polymer::constraintModels::newton::correctChainLengths
 (
     polymerChains& chains,
     const label chaini,
@@ -343,7 +350,7 @@ Foam::label Foam::constraintModels::newton::correctChainLengths
 }
 
 
-Foam::label Foam::constraintModels::newton::correctChainVelocities
+Foam::label Foam::polymer::constraintModels::newton::correctChainVelocities
 (
     polymerChains& chains,
     const label chaini,

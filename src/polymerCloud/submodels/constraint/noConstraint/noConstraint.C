@@ -17,17 +17,23 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace constraintModels
 {
     defineTypeNameAndDebug(noConstraint, 0);
     addToRunTimeSelectionTable(constraintModel, noConstraint, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::constraintModels::noConstraint::noConstraint(const dictionary& dict)
+Foam::polymer::constraintModels::noConstraint::noConstraint
+(
+    const dictionary& dict
+)
 :
     constraintModel(typeName, dict)
 {}

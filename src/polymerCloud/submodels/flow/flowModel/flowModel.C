@@ -16,14 +16,17 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(flowModel, 0);
     defineRunTimeSelectionTable(flowModel, dictionary);
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::flowModel::flowModel
+Foam::polymer::flowModel::flowModel
 (
     const word& type,
     const dictionary& dict,

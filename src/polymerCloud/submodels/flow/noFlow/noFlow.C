@@ -17,17 +17,24 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace flowModels
 {
     defineTypeNameAndDebug(noFlow, 0);
     addToRunTimeSelectionTable(flowModel, noFlow, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::flowModels::noFlow::noFlow(const dictionary& dict, const fvMesh& mesh)
+Foam::polymer::flowModels::noFlow::noFlow
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
 :
     flowModel(typeName, dict, mesh)
 {}
@@ -35,7 +42,7 @@ Foam::flowModels::noFlow::noFlow(const dictionary& dict, const fvMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::flowModels::noFlow::update(const polymerChains& chains)
+void Foam::polymer::flowModels::noFlow::update(const polymerChains& chains)
 {
     // The velocities stay zero: only a change of bead count costs anything
     if (beadVelocity_.size() != chains.nBeads())

@@ -19,17 +19,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace forceModels
 {
     defineTypeNameAndDebug(electrophoretic, 0);
     addToRunTimeSelectionTable(forceModel, electrophoretic, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::forceModels::electrophoretic::electrophoretic
+Foam::polymer::forceModels::electrophoretic::electrophoretic
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -83,7 +86,7 @@ Foam::forceModels::electrophoretic::electrophoretic
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::forceModels::electrophoretic::addForce
+void Foam::polymer::forceModels::electrophoretic::addForce
 (
     const polymerChains& chains,
     UList<vector>& force

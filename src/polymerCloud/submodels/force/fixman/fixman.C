@@ -17,17 +17,24 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace forceModels
 {
     defineTypeNameAndDebug(fixman, 0);
     addToRunTimeSelectionTable(forceModel, fixman, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::forceModels::fixman::fixman(const dictionary& dict, const fvMesh&)
+Foam::polymer::forceModels::fixman::fixman
+(
+    const dictionary& dict,
+    const fvMesh&
+)
 :
     forceModel(typeName, dict)
 {}
@@ -35,7 +42,7 @@ Foam::forceModels::fixman::fixman(const dictionary& dict, const fvMesh&)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::forceModels::fixman::addChainForce
+void Foam::polymer::forceModels::fixman::addChainForce
 (
     const polymerChains& chains,
     const label chaini,
@@ -114,7 +121,7 @@ void Foam::forceModels::fixman::addChainForce
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::forceModels::fixman::addForce
+void Foam::polymer::forceModels::fixman::addForce
 (
     const polymerChains& chains,
     UList<vector>& force

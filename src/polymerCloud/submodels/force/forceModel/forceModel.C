@@ -16,14 +16,17 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(forceModel, 0);
     defineRunTimeSelectionTable(forceModel, dictionary);
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::forceModel::forceModel
+Foam::polymer::forceModel::forceModel
 (
     const word& type,
     const dictionary& dict

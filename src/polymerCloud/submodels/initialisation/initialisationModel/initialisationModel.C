@@ -17,14 +17,17 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(initialisationModel, 0);
     defineRunTimeSelectionTable(initialisationModel, dictionary);
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::initialisationModel::initialisationModel
+Foam::polymer::initialisationModel::initialisationModel
 (
     const word& type,
     const dictionary& dict,
@@ -43,7 +46,7 @@ Foam::initialisationModel::initialisationModel
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
-Foam::label Foam::initialisationModel::lookupType
+Foam::label Foam::polymer::initialisationModel::lookupType
 (
     const PtrList<chainType>& types,
     const dictionary& dict,
@@ -63,7 +66,7 @@ Foam::label Foam::initialisationModel::lookupType
 }
 
 
-Foam::label Foam::initialisationModel::findType
+Foam::label Foam::polymer::initialisationModel::findType
 (
     const PtrList<chainType>& types,
     const word& typeName,

@@ -22,17 +22,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace initialisationModels
 {
     defineTypeNameAndDebug(randomWalk, 0);
     addToRunTimeSelectionTable(initialisationModel, randomWalk, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::initialisationModels::randomWalk::randomWalk
+Foam::polymer::initialisationModels::randomWalk::randomWalk
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -62,7 +65,7 @@ Foam::initialisationModels::randomWalk::randomWalk
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::List<Foam::point> Foam::initialisationModels::randomWalk::walk
+Foam::List<Foam::point> Foam::polymer::initialisationModels::randomWalk::walk
 (
     const chainType& type,
     const boundBox& box,
@@ -102,7 +105,7 @@ Foam::List<Foam::point> Foam::initialisationModels::randomWalk::walk
 
 
 Foam::List<Foam::List<Foam::point>>
-Foam::initialisationModels::randomWalk::walks
+Foam::polymer::initialisationModels::randomWalk::walks
 (
     const chainType& type,
     const boundBox& box,
@@ -121,7 +124,7 @@ Foam::initialisationModels::randomWalk::walks
 
 
 Foam::List<Foam::List<Foam::point>>
-Foam::initialisationModels::randomWalk::walksInside
+Foam::polymer::initialisationModels::randomWalk::walksInside
 (
     const chainType& type,
     const boundBox& box,
@@ -188,7 +191,7 @@ Foam::initialisationModels::randomWalk::walksInside
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::initialisationModels::randomWalk::create
+void Foam::polymer::initialisationModels::randomWalk::create
 (
     polymerChains& chains,
     const label seed

@@ -19,17 +19,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace initialisationModels
 {
     defineTypeNameAndDebug(trefoil, 0);
     addToRunTimeSelectionTable(initialisationModel, trefoil, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
-Foam::vector Foam::initialisationModels::trefoil::curve(const scalar t)
+Foam::vector Foam::polymer::initialisationModels::trefoil::curve(const scalar t)
 {
     return vector
     (
@@ -40,7 +43,7 @@ Foam::vector Foam::initialisationModels::trefoil::curve(const scalar t)
 }
 
 
-Foam::scalar Foam::initialisationModels::trefoil::walk
+Foam::scalar Foam::polymer::initialisationModels::trefoil::walk
 (
     const scalar s,
     const scalar a,
@@ -87,7 +90,7 @@ Foam::scalar Foam::initialisationModels::trefoil::walk
 }
 
 
-Foam::List<Foam::point> Foam::initialisationModels::trefoil::beads
+Foam::List<Foam::point> Foam::polymer::initialisationModels::trefoil::beads
 (
     const label nBeads,
     const scalar a,
@@ -138,7 +141,7 @@ Foam::List<Foam::point> Foam::initialisationModels::trefoil::beads
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::initialisationModels::trefoil::trefoil
+Foam::polymer::initialisationModels::trefoil::trefoil
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -161,7 +164,7 @@ Foam::initialisationModels::trefoil::trefoil
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::initialisationModels::trefoil::create
+void Foam::polymer::initialisationModels::trefoil::create
 (
     polymerChains& chains,
     const label seed

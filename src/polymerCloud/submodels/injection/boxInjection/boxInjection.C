@@ -21,17 +21,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace injectionModels
 {
     defineTypeNameAndDebug(boxInjection, 0);
     addToRunTimeSelectionTable(injectionModel, boxInjection, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::injectionModels::boxInjection::boxInjection
+Foam::polymer::injectionModels::boxInjection::boxInjection
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -63,7 +66,7 @@ Foam::injectionModels::boxInjection::boxInjection
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::label Foam::injectionModels::boxInjection::inject
+Foam::label Foam::polymer::injectionModels::boxInjection::inject
 (
     polymerChains& chains,
     const label seed,

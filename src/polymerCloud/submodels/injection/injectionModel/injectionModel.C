@@ -16,14 +16,17 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(injectionModel, 0);
     defineRunTimeSelectionTable(injectionModel, dictionary);
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::injectionModel::injectionModel
+Foam::polymer::injectionModel::injectionModel
 (
     const word& type,
     const dictionary& dict,

@@ -17,17 +17,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace injectionModels
 {
     defineTypeNameAndDebug(noInjection, 0);
     addToRunTimeSelectionTable(injectionModel, noInjection, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::injectionModels::noInjection::noInjection
+Foam::polymer::injectionModels::noInjection::noInjection
 (
     const dictionary& dict,
     const fvMesh& mesh

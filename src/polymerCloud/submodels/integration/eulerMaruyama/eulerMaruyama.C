@@ -18,17 +18,23 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace integrationModels
 {
     defineTypeNameAndDebug(eulerMaruyama, 0);
     addToRunTimeSelectionTable(integrationModel, eulerMaruyama, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::integrationModels::eulerMaruyama::eulerMaruyama(const dictionary& dict)
+Foam::polymer::integrationModels::eulerMaruyama::eulerMaruyama
+(
+    const dictionary& dict
+)
 :
     integrationModel(typeName, dict)
 {}
@@ -36,7 +42,7 @@ Foam::integrationModels::eulerMaruyama::eulerMaruyama(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::integrationModels::eulerMaruyama::integrateChain
+void Foam::polymer::integrationModels::eulerMaruyama::integrateChain
 (
     polymerChains& chains,
     const label chaini,

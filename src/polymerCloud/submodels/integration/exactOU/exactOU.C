@@ -20,17 +20,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace integrationModels
 {
     defineTypeNameAndDebug(exactOU, 0);
     addToRunTimeSelectionTable(integrationModel, exactOU, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
-Foam::scalar Foam::integrationModels::exactOU::positionVarianceFactor
+Foam::scalar Foam::polymer::integrationModels::exactOU::positionVarianceFactor
 (
     const scalar h
 )
@@ -61,8 +64,8 @@ Foam::scalar Foam::integrationModels::exactOU::positionVarianceFactor
 }
 
 
-Foam::integrationModels::exactOU::coefficients
-Foam::integrationModels::exactOU::coefficients::exact
+Foam::polymer::integrationModels::exactOU::coefficients
+Foam::polymer::integrationModels::exactOU::coefficients::exact
 (
     const chainType& type,
     const scalar dt
@@ -91,7 +94,7 @@ Foam::integrationModels::exactOU::coefficients::exact
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::integrationModels::exactOU::exactOU(const dictionary& dict)
+Foam::polymer::integrationModels::exactOU::exactOU(const dictionary& dict)
 :
     integrationModel(typeName, dict),
     cache_(),
@@ -102,7 +105,7 @@ Foam::integrationModels::exactOU::exactOU(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::integrationModels::exactOU::integrateChain
+void Foam::polymer::integrationModels::exactOU::integrateChain
 (
     polymerChains& chains,
     const label chaini,

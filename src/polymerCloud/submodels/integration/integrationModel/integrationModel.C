@@ -16,14 +16,17 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(integrationModel, 0);
     defineRunTimeSelectionTable(integrationModel, dictionary);
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::integrationModel::integrationModel
+Foam::polymer::integrationModel::integrationModel
 (
     const word& type,
     const dictionary& dict
@@ -35,7 +38,7 @@ Foam::integrationModel::integrationModel
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::integrationModel::integrate
+void Foam::polymer::integrationModel::integrate
 (
     polymerChains& chains,
     const UList<vector>& driftVelocity,

@@ -21,17 +21,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace wallModels
 {
     defineTypeNameAndDebug(levelSet, 0);
     addToRunTimeSelectionTable(wallModel, levelSet, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::wallModels::levelSet::levelSet
+Foam::polymer::wallModels::levelSet::levelSet
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -63,7 +66,7 @@ Foam::wallModels::levelSet::levelSet
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::wallModels::levelSet::distanceAt
+Foam::scalar Foam::polymer::wallModels::levelSet::distanceAt
 (
     const point& p,
     label& cell
@@ -81,7 +84,7 @@ Foam::scalar Foam::wallModels::levelSet::distanceAt
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::wallModels::levelSet::predict
+bool Foam::polymer::wallModels::levelSet::predict
 (
     const point& x,
     const vector& v,

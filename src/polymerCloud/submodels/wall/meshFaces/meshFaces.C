@@ -17,17 +17,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace wallModels
 {
     defineTypeNameAndDebug(meshFaces, 0);
     addToRunTimeSelectionTable(wallModel, meshFaces, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::wallModels::meshFaces::meshFaces
+Foam::polymer::wallModels::meshFaces::meshFaces
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -39,7 +42,7 @@ Foam::wallModels::meshFaces::meshFaces
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::wallModels::meshFaces::predict
+bool Foam::polymer::wallModels::meshFaces::predict
 (
     const point& x,
     const vector& v,

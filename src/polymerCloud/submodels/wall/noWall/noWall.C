@@ -17,17 +17,24 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace wallModels
 {
     defineTypeNameAndDebug(noWall, 0);
     addToRunTimeSelectionTable(wallModel, noWall, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::wallModels::noWall::noWall(const dictionary& dict, const fvMesh& mesh)
+Foam::polymer::wallModels::noWall::noWall
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
 :
     wallModel(typeName, dict, mesh)
 {}

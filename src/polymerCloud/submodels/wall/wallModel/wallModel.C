@@ -18,12 +18,15 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(wallModel, 0);
     defineRunTimeSelectionTable(wallModel, dictionary);
+} // End namespace polymer
 }
 
-const Foam::Enum<Foam::wallModel::interactionType>
-Foam::wallModel::interactionTypeNames
+const Foam::Enum<Foam::polymer::wallModel::interactionType>
+Foam::polymer::wallModel::interactionTypeNames
 ({
     { interactionType::rebound, "rebound" },
     { interactionType::escape, "escape" },
@@ -34,7 +37,7 @@ Foam::wallModel::interactionTypeNames
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::wallModel::wallModel
+Foam::polymer::wallModel::wallModel
 (
     const word& type,
     const dictionary& dict,
@@ -93,7 +96,7 @@ Foam::wallModel::wallModel
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
-const Foam::boundaryFaces& Foam::wallModel::faces() const
+const Foam::polymer::boundaryFaces& Foam::polymer::wallModel::faces() const
 {
     if (!faces_.valid())
     {
@@ -110,7 +113,7 @@ const Foam::boundaryFaces& Foam::wallModel::faces() const
 }
 
 
-bool Foam::wallModel::faceImpact
+bool Foam::polymer::wallModel::faceImpact
 (
     const point& x,
     const vector& v,
@@ -163,13 +166,13 @@ bool Foam::wallModel::faceImpact
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::wallModel::setReach(const scalar reach)
+void Foam::polymer::wallModel::setReach(const scalar reach)
 {
     faces_.reset(new boundaryFaces(mesh_, reach));
 }
 
 
-void Foam::wallModel::interact
+void Foam::polymer::wallModel::interact
 (
     const label bead,
     const impact& hit,
@@ -215,7 +218,7 @@ void Foam::wallModel::interact
 }
 
 
-void Foam::wallModel::correct
+void Foam::polymer::wallModel::correct
 (
     polymerChains& chains,
     const UList<vector>& positionsOld,
@@ -254,7 +257,7 @@ void Foam::wallModel::correct
 
 // * * * * * * * * * * * * * * * * * Report  * * * * * * * * * * * * * * * * //
 
-void Foam::wallModel::writeReport(Ostream& os) const
+void Foam::polymer::wallModel::writeReport(Ostream& os) const
 {
     const wallCounters total = totalCounters_.reduced();
 

@@ -17,17 +17,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace crossingRootSolvers
 {
     defineTypeNameAndDebug(bisection, 0);
     addToRunTimeSelectionTable(crossingRootSolver, bisection, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::crossingRootSolvers::bisection::earliestCrossing
+Foam::scalar Foam::polymer::crossingRootSolvers::bisection::earliestCrossing
 (
     const rodPairCrossing& pair,
     const scalar T

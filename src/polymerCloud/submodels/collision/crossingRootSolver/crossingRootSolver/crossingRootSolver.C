@@ -17,14 +17,17 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
     defineTypeNameAndDebug(crossingRootSolver, 0);
     defineRunTimeSelectionTable(crossingRootSolver, dictionary);
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
-bool Foam::crossingRootSolver::signChange
+bool Foam::polymer::crossingRootSolver::signChange
 (
     const rodPairCrossing& pair,
     const scalar T,
@@ -38,7 +41,7 @@ bool Foam::crossingRootSolver::signChange
 }
 
 
-Foam::scalar Foam::crossingRootSolver::bisect
+Foam::scalar Foam::polymer::crossingRootSolver::bisect
 (
     const rodPairCrossing& pair,
     scalar a,
@@ -72,7 +75,8 @@ Foam::scalar Foam::crossingRootSolver::bisect
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
-Foam::autoPtr<Foam::crossingRootSolver> Foam::crossingRootSolver::New
+Foam::autoPtr<Foam::polymer::crossingRootSolver>
+Foam::polymer::crossingRootSolver::New
 (
     const word& solverType,
     const dictionary& dict

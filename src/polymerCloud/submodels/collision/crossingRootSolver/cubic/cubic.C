@@ -18,17 +18,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace crossingRootSolvers
 {
     defineTypeNameAndDebug(cubic, 0);
     addToRunTimeSelectionTable(crossingRootSolver, cubic, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::crossingRootSolvers::cubic::earliestCrossing
+Foam::scalar Foam::polymer::crossingRootSolvers::cubic::earliestCrossing
 (
     const rodPairCrossing& pair,
     const scalar T

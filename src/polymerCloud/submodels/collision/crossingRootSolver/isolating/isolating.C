@@ -17,17 +17,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace crossingRootSolvers
 {
     defineTypeNameAndDebug(isolating, 0);
     addToRunTimeSelectionTable(crossingRootSolver, isolating, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::crossingRootSolvers::isolating::earliestCrossing
+Foam::scalar Foam::polymer::crossingRootSolvers::isolating::earliestCrossing
 (
     const rodPairCrossing& pair,
     const scalar T

@@ -19,17 +19,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace crossingRootSolvers
 {
     defineTypeNameAndDebug(newtonRoot, 0);
     addToRunTimeSelectionTable(crossingRootSolver, newtonRoot, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::crossingRootSolvers::newtonRoot::earliestCrossing
+Foam::scalar Foam::polymer::crossingRootSolvers::newtonRoot::earliestCrossing
 (
     const rodPairCrossing& pair,
     const scalar T

@@ -14,7 +14,7 @@ License
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::chainRods::update(const polymerChains& chains)
+void Foam::polymer::chainRods::update(const polymerChains& chains)
 {
     if
     (

@@ -14,7 +14,7 @@ License
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::label Foam::collisionEventQueue::stamp
+Foam::label Foam::polymer::collisionEventQueue::stamp
 (
     const FixedList<label, 4>& beads
 ) const
@@ -33,7 +33,7 @@ Foam::label Foam::collisionEventQueue::stamp
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::collisionEventQueue::reset(const label nBeads)
+void Foam::polymer::collisionEventQueue::reset(const label nBeads)
 {
     queue_ = std::priority_queue<event>();
     version_.resize(nBeads);
@@ -41,14 +41,14 @@ void Foam::collisionEventQueue::reset(const label nBeads)
 }
 
 
-void Foam::collisionEventQueue::push(event e)
+void Foam::polymer::collisionEventQueue::push(event e)
 {
     e.stamp = stamp(e.beads);
     queue_.push(e);
 }
 
 
-bool Foam::collisionEventQueue::next(event& e)
+bool Foam::polymer::collisionEventQueue::next(event& e)
 {
     while (!queue_.empty())
     {

@@ -34,7 +34,7 @@ inline uint64_t cellKey(const int64_t i, const int64_t j, const int64_t k)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::sweptBoxGrid::sweptBoxGrid()
+Foam::polymer::sweptBoxGrid::sweptBoxGrid()
 :
     rods_(nullptr),
     imageShift_(),
@@ -51,7 +51,7 @@ Foam::sweptBoxGrid::sweptBoxGrid()
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::sweptBoxGrid::buildImages(const UList<vector>& lattice)
+void Foam::polymer::sweptBoxGrid::buildImages(const UList<vector>& lattice)
 {
     // Every combination of -1, 0, +1 per lattice vector, zero first
     imageShift_ = List<vector>(1, Zero);
@@ -73,7 +73,7 @@ void Foam::sweptBoxGrid::buildImages(const UList<vector>& lattice)
 }
 
 
-Foam::boundBox Foam::sweptBoxGrid::entryBox
+Foam::boundBox Foam::polymer::sweptBoxGrid::entryBox
 (
     const label entry
 ) const
@@ -85,7 +85,7 @@ Foam::boundBox Foam::sweptBoxGrid::entryBox
 }
 
 
-void Foam::sweptBoxGrid::addPair
+void Foam::polymer::sweptBoxGrid::addPair
 (
     const label entryA,
     const label entryB
@@ -133,7 +133,7 @@ void Foam::sweptBoxGrid::addPair
 }
 
 
-void Foam::sweptBoxGrid::insertEntry
+void Foam::polymer::sweptBoxGrid::insertEntry
 (
     const label entry,
     const boundBox& box
@@ -170,7 +170,7 @@ void Foam::sweptBoxGrid::insertEntry
 }
 
 
-void Foam::sweptBoxGrid::insert(const label rod)
+void Foam::polymer::sweptBoxGrid::insert(const label rod)
 {
     // Images of a rod are inserted whatever their distance from the
     // chains: the broad phase cost grows by the number of images on
@@ -186,7 +186,7 @@ void Foam::sweptBoxGrid::insert(const label rod)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::sweptBoxGrid::build
+void Foam::polymer::sweptBoxGrid::build
 (
     const chainRods& rods,
     const UList<boundBox>& boxes,
@@ -225,7 +225,7 @@ void Foam::sweptBoxGrid::build
 }
 
 
-void Foam::sweptBoxGrid::grow(const label rod, const boundBox& box)
+void Foam::polymer::sweptBoxGrid::grow(const label rod, const boundBox& box)
 {
     if (!box_[rod].contains(box))
     {

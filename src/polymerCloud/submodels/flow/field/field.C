@@ -10,7 +10,7 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "fieldFlow.H"
+#include "field.H"
 #include "PstreamBuffers.H"
 #include "clockTime.H"
 #include "volFields.H"
@@ -23,17 +23,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace flowModels
 {
-    defineTypeNameAndDebug(fieldFlow, 0);
-    addToRunTimeSelectionTable(flowModel, fieldFlow, dictionary);
+    defineTypeNameAndDebug(field, 0);
+    addToRunTimeSelectionTable(flowModel, field, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::flowModels::fieldFlow::fieldFlow
+Foam::polymer::flowModels::field::field
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -52,7 +55,7 @@ Foam::flowModels::fieldFlow::fieldFlow
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
+void Foam::polymer::flowModels::field::update(const polymerChains& chains)
 {
     if (chains.positions().empty() && !Pstream::parRun())
     {
@@ -84,7 +87,7 @@ void Foam::flowModels::fieldFlow::update(const polymerChains& chains)
 }
 
 
-void Foam::flowModels::fieldFlow::storePredictor()
+void Foam::polymer::flowModels::field::storePredictor()
 {
     velocityStart_ = beadVelocity_;
 }

@@ -10,7 +10,7 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "fileChains.H"
+#include "file.H"
 #include "IOdictionary.H"
 #include "checkedInput.H"
 #include "addToRunTimeSelectionTable.H"
@@ -19,17 +19,20 @@ License
 
 namespace Foam
 {
+namespace polymer
+{
 namespace initialisationModels
 {
-    defineTypeNameAndDebug(fileChains, 0);
-    addToRunTimeSelectionTable(initialisationModel, fileChains, dictionary);
+    defineTypeNameAndDebug(file, 0);
+    addToRunTimeSelectionTable(initialisationModel, file, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::initialisationModels::fileChains::fileChains
+Foam::polymer::initialisationModels::file::file
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -49,7 +52,7 @@ Foam::initialisationModels::fileChains::fileChains
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::initialisationModels::fileChains::check
+void Foam::polymer::initialisationModels::file::check
 (
     const chainType& type,
     const List<point>& x,
@@ -88,7 +91,7 @@ void Foam::initialisationModels::fileChains::check
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::initialisationModels::fileChains::create
+void Foam::polymer::initialisationModels::file::create
 (
     polymerChains& chains,
     const label seed

@@ -10,24 +10,27 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "prescribedFlow.H"
+#include "prescribed.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
 {
+namespace polymer
+{
 namespace flowModels
 {
-    defineTypeNameAndDebug(prescribedFlow, 0);
-    addToRunTimeSelectionTable(flowModel, prescribedFlow, dictionary);
+    defineTypeNameAndDebug(prescribed, 0);
+    addToRunTimeSelectionTable(flowModel, prescribed, dictionary);
 }
+} // End namespace polymer
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::flowModels::prescribedFlow::prescribedFlow
+Foam::polymer::flowModels::prescribed::prescribed
 (
     const dictionary& dict,
     const fvMesh& mesh
@@ -56,7 +59,7 @@ Foam::flowModels::prescribedFlow::prescribedFlow
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::flowModels::prescribedFlow::update(const polymerChains& chains)
+void Foam::polymer::flowModels::prescribed::update(const polymerChains& chains)
 {
     const List<vector>& x = chains.positions();
     beadVelocity_.setSize(x.size());
