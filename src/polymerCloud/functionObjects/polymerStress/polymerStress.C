@@ -15,21 +15,11 @@ License
 #include "checkedInput.H"
 #include "OSspecific.H"
 #include "periodicImages.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace cloudFunctions
-{
-    defineTypeNameAndDebug(polymerStress, 0);
-    addToRunTimeSelectionTable(polymerCloudFunction, polymerStress, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(polymerCloudFunction, cloudFunctions, polymerStress)
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //

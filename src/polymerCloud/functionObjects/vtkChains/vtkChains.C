@@ -14,23 +14,13 @@ License
 #include "polymerCloud.H"
 #include "foamVtkOutput.H"
 #include "OSspecific.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 #include <fstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace cloudFunctions
-{
-    defineTypeNameAndDebug(vtkChains, 0);
-    addToRunTimeSelectionTable(polymerCloudFunction, vtkChains, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(polymerCloudFunction, cloudFunctions, vtkChains)
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //

@@ -13,23 +13,13 @@ License
 #include "elasticRods.H"
 #include "checkedInput.H"
 #include "rodCrossingAudit.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 #include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace collisionModels
-{
-    defineTypeNameAndDebug(elasticRods, 0);
-    addToRunTimeSelectionTable(collisionModel, elasticRods, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(collisionModel, collisionModels, elasticRods)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

@@ -11,21 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "noCollision.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace collisionModels
-{
-    defineTypeNameAndDebug(noCollision, 0);
-    addToRunTimeSelectionTable(collisionModel, noCollision, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(collisionModel, collisionModels, noCollision)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

@@ -12,21 +12,11 @@ License
 
 #include "RATTLE.H"
 #include "checkedInput.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace constraintModels
-{
-    defineTypeNameAndDebug(RATTLE, 0);
-    addToRunTimeSelectionTable(constraintModel, RATTLE, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(constraintModel, constraintModels, RATTLE)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

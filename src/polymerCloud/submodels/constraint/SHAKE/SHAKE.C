@@ -12,21 +12,11 @@ License
 
 #include "SHAKE.H"
 #include "checkedInput.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace constraintModels
-{
-    defineTypeNameAndDebug(SHAKE, 0);
-    addToRunTimeSelectionTable(constraintModel, SHAKE, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(constraintModel, constraintModels, SHAKE)
 
 const Foam::Enum<Foam::polymer::constraintModels::SHAKE::directionType>
 Foam::polymer::constraintModels::SHAKE::directionTypeNames

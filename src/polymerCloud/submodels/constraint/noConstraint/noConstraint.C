@@ -11,21 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "noConstraint.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace constraintModels
-{
-    defineTypeNameAndDebug(noConstraint, 0);
-    addToRunTimeSelectionTable(constraintModel, noConstraint, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(constraintModel, constraintModels, noConstraint)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

@@ -17,21 +17,11 @@ License
 #include "interpolation.H"
 #include "fvmSup.H"
 #include "checkedInput.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace flowModels
-{
-    defineTypeNameAndDebug(field, 0);
-    addToRunTimeSelectionTable(flowModel, field, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(flowModel, flowModels, field)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

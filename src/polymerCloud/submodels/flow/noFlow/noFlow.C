@@ -11,21 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "noFlow.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace flowModels
-{
-    defineTypeNameAndDebug(noFlow, 0);
-    addToRunTimeSelectionTable(flowModel, noFlow, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(flowModel, flowModels, noFlow)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

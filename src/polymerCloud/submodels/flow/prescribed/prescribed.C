@@ -11,21 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "prescribed.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace flowModels
-{
-    defineTypeNameAndDebug(prescribed, 0);
-    addToRunTimeSelectionTable(flowModel, prescribed, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(flowModel, flowModels, prescribed)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

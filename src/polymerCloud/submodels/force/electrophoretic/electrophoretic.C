@@ -13,21 +13,11 @@ License
 #include "electrophoretic.H"
 #include "fvm.H"
 #include "fvc.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace forceModels
-{
-    defineTypeNameAndDebug(electrophoretic, 0);
-    addToRunTimeSelectionTable(forceModel, electrophoretic, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(forceModel, forceModels, electrophoretic)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

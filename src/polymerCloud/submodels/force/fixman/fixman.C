@@ -11,21 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fixman.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace forceModels
-{
-    defineTypeNameAndDebug(fixman, 0);
-    addToRunTimeSelectionTable(forceModel, fixman, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(forceModel, forceModels, fixman)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

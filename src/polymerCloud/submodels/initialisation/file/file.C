@@ -13,21 +13,11 @@ License
 #include "file.H"
 #include "IOdictionary.H"
 #include "checkedInput.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace initialisationModels
-{
-    defineTypeNameAndDebug(file, 0);
-    addToRunTimeSelectionTable(initialisationModel, file, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(initialisationModel, initialisationModels, file)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

@@ -16,21 +16,11 @@ License
 #include "chainNoise.H"
 #include "checkedInput.H"
 #include "mathematicalConstants.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace initialisationModels
-{
-    defineTypeNameAndDebug(randomWalk, 0);
-    addToRunTimeSelectionTable(initialisationModel, randomWalk, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(initialisationModel, initialisationModels, randomWalk)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

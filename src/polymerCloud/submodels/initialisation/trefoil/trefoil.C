@@ -13,21 +13,11 @@ License
 #include "trefoil.H"
 #include "transform.H"
 #include "mathematicalConstants.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace initialisationModels
-{
-    defineTypeNameAndDebug(trefoil, 0);
-    addToRunTimeSelectionTable(initialisationModel, trefoil, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(initialisationModel, initialisationModels, trefoil)
 
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //

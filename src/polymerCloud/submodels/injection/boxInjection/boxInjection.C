@@ -13,23 +13,13 @@ License
 #include "boxInjection.H"
 #include "randomWalk.H"
 #include "checkedInput.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 #include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace injectionModels
-{
-    defineTypeNameAndDebug(boxInjection, 0);
-    addToRunTimeSelectionTable(injectionModel, boxInjection, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(injectionModel, injectionModels, boxInjection)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

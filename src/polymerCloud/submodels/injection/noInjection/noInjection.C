@@ -11,21 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "noInjection.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace injectionModels
-{
-    defineTypeNameAndDebug(noInjection, 0);
-    addToRunTimeSelectionTable(injectionModel, noInjection, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(injectionModel, injectionModels, noInjection)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

@@ -12,21 +12,11 @@ License
 
 #include "eulerMaruyama.H"
 #include "chainNoise.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace integrationModels
-{
-    defineTypeNameAndDebug(eulerMaruyama, 0);
-    addToRunTimeSelectionTable(integrationModel, eulerMaruyama, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(integrationModel, integrationModels, eulerMaruyama)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

@@ -12,23 +12,13 @@ License
 
 #include "exactOU.H"
 #include "chainNoise.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 #include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace integrationModels
-{
-    defineTypeNameAndDebug(exactOU, 0);
-    addToRunTimeSelectionTable(integrationModel, exactOU, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(integrationModel, integrationModels, exactOU)
 
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //

@@ -15,21 +15,11 @@ License
 #include "fvcGrad.H"
 #include "wallPolyPatch.H"
 #include "checkedInput.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace wallModels
-{
-    defineTypeNameAndDebug(levelSet, 0);
-    addToRunTimeSelectionTable(wallModel, levelSet, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(wallModel, wallModels, levelSet)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

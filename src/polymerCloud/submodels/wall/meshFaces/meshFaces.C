@@ -11,21 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "meshFaces.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace wallModels
-{
-    defineTypeNameAndDebug(meshFaces, 0);
-    addToRunTimeSelectionTable(wallModel, meshFaces, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(wallModel, wallModels, meshFaces)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

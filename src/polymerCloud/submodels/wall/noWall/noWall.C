@@ -11,21 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "noWall.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace wallModels
-{
-    defineTypeNameAndDebug(noWall, 0);
-    addToRunTimeSelectionTable(wallModel, noWall, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(wallModel, wallModels, noWall)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

@@ -11,21 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "bisection.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace crossingRootSolvers
-{
-    defineTypeNameAndDebug(bisection, 0);
-    addToRunTimeSelectionTable(crossingRootSolver, bisection, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(crossingRootSolver, crossingRootSolvers, bisection)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

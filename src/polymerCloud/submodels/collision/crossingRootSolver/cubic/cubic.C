@@ -12,21 +12,11 @@ License
 
 #include "cubic.H"
 #include "mathematicalConstants.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace crossingRootSolvers
-{
-    defineTypeNameAndDebug(cubic, 0);
-    addToRunTimeSelectionTable(crossingRootSolver, cubic, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(crossingRootSolver, crossingRootSolvers, cubic)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -11,21 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "isolating.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace crossingRootSolvers
-{
-    defineTypeNameAndDebug(isolating, 0);
-    addToRunTimeSelectionTable(crossingRootSolver, isolating, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(crossingRootSolver, crossingRootSolvers, isolating)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -11,23 +11,13 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "newtonRoot.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 #include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace crossingRootSolvers
-{
-    defineTypeNameAndDebug(newtonRoot, 0);
-    addToRunTimeSelectionTable(crossingRootSolver, newtonRoot, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(crossingRootSolver, crossingRootSolvers, newtonRoot)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
