@@ -12,28 +12,28 @@ License
 
 #include "newton.H"
 #include "checkedInput.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-namespace constraintModels
-{
-    defineTypeNameAndDebug(newton, 0);
-    addToRunTimeSelectionTable(constraintModel, newton, dictionary);
-}
-} // End namespace polymer
-}
+makePolymerModel(constraintModel, constraintModels, newton)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::polymer::constraintModels::newton::newton(const dictionary& dict)
 :
-    constraintModel(typeName, dict),
+    newton(typeName, dict)
+{}
+
+
+Foam::polymer::constraintModels::newton::newton
+(
+    const word& type,
+    const dictionary& dict
+)
+:
+    constraintModel(type, dict),
     tolerance_
     (
         checkedInput::positiveScalarOrDefault
