@@ -40,11 +40,49 @@ Foam::polymer::chainStepper::chainStepper
     positionsStar_(),
     velocityChange_(),
     force_(),
-    drift_()
+    drift_(),
+    displacementReported_(false)
 {}
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::polymer::chainStepper::writeNeighbourDisplacement() const
+{
+    // delta = |r*_k - r^n_k|/a over the rods: how far the step moves
+    // neighbouring beads apart, the scale that sets the projections'
+    // failures and bias
+    scalar sumSqr = 0, largest = 0, nRods = 0;
+    const List<vector>& x = chains_.positions();
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const chainType& type = chains_.type(c);
+        const label first = chains_.start(c);
+        const label n = type.nBeads();
+        for (label k = 0; k < type.nRods(); ++k)
+        {
+            const label i = first + k;
+            const label j = first + (k + 1) % n;
+            const scalar delta =
+                mag((x[j] - x[i]) - (positionsOld_[j] - positionsOld_[i]))
+               /type.rodLength();
+            sumSqr += sqr(delta);
+            largest = max(largest, delta);
+            nRods += 1;
+        }
+    }
+    reduce(sumSqr, sumOp<scalar>());
+    reduce(largest, maxOp<scalar>());
+    reduce(nRods, sumOp<scalar>());
+
+    if (nRods > 0)
+    {
+        Info<< "polymerCloud: the first step moves neighbouring beads apart"
+            << " by delta/a = " << std::sqrt(sumSqr/nRods) << " (rms), "
+            << largest << " (largest)" << endl;
+    }
+}
+
 
 void Foam::polymer::chainStepper::recordUnconstrained()
 {
@@ -217,6 +255,12 @@ void Foam::polymer::chainStepper::integrate(const scalar deltaT)
         seed_
     );
     recordUnconstrained();
+
+    if (!displacementReported_)
+    {
+        writeNeighbourDisplacement();
+        displacementReported_ = true;
+    }
 }
 
 
