@@ -413,4 +413,13 @@ void Foam::polymer::chainDistribution::wrap()
 }
 
 
+void Foam::polymer::chainDistribution::update()
+{
+    wrap();
+    locateReferenceBeads();
+    distribute();
+    sort();
+}
+
+
 // ************************************************************************* //

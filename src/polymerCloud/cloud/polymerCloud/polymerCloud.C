@@ -237,6 +237,18 @@ Foam::label Foam::polymer::polymerCloud::nParcels() const
 }
 
 
+void Foam::polymer::polymerCloud::injectChains(const scalar time)
+{
+    const label nChainsBefore = chains_.nChains();
+    if (injection_->inject(chains_, solution_.seed(), nextChainId_, time))
+    {
+        distribution_->keepOwn(nChainsBefore);
+        setThermalVelocities(nChainsBefore);
+        nInjected_ += chains_.nChains() - nChainsBefore;
+    }
+}
+
+
 void Foam::polymer::polymerCloud::evolve()
 {
     if (!solution_.active())
@@ -250,15 +262,7 @@ void Foam::polymer::polymerCloud::evolve()
     const scalar deltaT = runTime.deltaTValue();
     const scalar time = runTime.value();
 
-    // New chains fed in, with thermal velocities
-    const label nChainsBefore = chains_.nChains();
-    if (injection_->inject(chains_, solution_.seed(), nextChainId_, time))
-    {
-        distribution_->keepOwn(nChainsBefore);
-        setThermalVelocities(nChainsBefore);
-        nInjected_ += chains_.nChains() - nChainsBefore;
-    }
-
+    injectChains(time);
     stepper_->start();
 
     // 1. Unconstrained update in the fluid velocity and forces at x^n
@@ -319,10 +323,7 @@ void Foam::polymer::polymerCloud::evolve()
     {
         model.endStep();
     }
-    distribution_->wrap();
-    distribution_->locateReferenceBeads();
-    distribution_->distribute();
-    distribution_->sort();
+    distribution_->update();
 
     evolveSeconds_ += timer.cpuTimeIncrement();
     beadSteps_ += chains_.nBeads();
