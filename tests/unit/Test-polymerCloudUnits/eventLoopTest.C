@@ -145,7 +145,7 @@ TEST(sweptBoxGrid, FindsExactlyTheOverlappingPairs)
     }
 
     sweptBoxGrid grid;
-    grid.build(rods, boxes, List<vector>());
+    grid.build(rods, List<boundBox>(boxes), List<vector>());
 
     std::set<std::pair<label, label>> expected, found;
     forAll(boxes, a)
@@ -208,10 +208,10 @@ TEST(sweptBoxGrid, MeetsAcrossThePeriodicLattice)
     }
 
     sweptBoxGrid grid;
-    grid.build(rods, boxes, List<vector>());
+    grid.build(rods, List<boundBox>(boxes), List<vector>());
     EXPECT_EQ(grid.pairs().size(), 0);
 
-    grid.build(rods, boxes, List<vector>({vector(10, 0, 0)}));
+    grid.build(rods, List<boundBox>(boxes), List<vector>({vector(10, 0, 0)}));
     ASSERT_EQ(grid.pairs().size(), 1);
     EXPECT_EQ(grid.pairs()[0], labelPair(0, 1));
     EXPECT_EQ(grid.pairShift(0), vector(-10, 0, 0));

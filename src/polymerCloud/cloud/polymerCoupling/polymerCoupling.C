@@ -215,6 +215,7 @@ void Foam::polymer::polymerCoupling::deposit
 
     const volVectorField& U =
         mesh_.lookupObject<volVectorField>(solvedFlow().UName());
+    const beadSampler& sampler = solvedFlow().sampler();
 
     // Beads in other processors' meshes: their momentum goes there
     const label nProcs = Pstream::nProcs();
@@ -239,15 +240,15 @@ void Foam::polymer::polymerCoupling::deposit
                 transfer += force[i]*deltaT;
             }
 
-            const label celli = solvedFlow().sampler().hostTets()[i].cell();
+            const label celli = sampler.hostTets()[i].cell();
             if (celli < 0)
             {
-                const label proci = solvedFlow().sampler().remoteOwners()[i];
+                const label proci = sampler.remoteOwners()[i];
                 if (proci >= 0)
                 {
                     remoteCell[proci].append
                     (
-                        solvedFlow().sampler().remoteTets()[i].cell()
+                        sampler.remoteTets()[i].cell()
                     );
                     remoteTransfer[proci].append(transfer);
                     remoteCoeff[proci].append(coeff);

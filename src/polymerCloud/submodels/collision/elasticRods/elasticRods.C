@@ -363,7 +363,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
     {
         boxes[rod] = sweep(rod, 0, deltaT);
     }
-    grid_.build(rods_, boxes, lattice_);
+    grid_.build(rods_, std::move(boxes), lattice_);
 
     queue_.reset(nBeads);
     forAll(grid_.pairs(), pairi)

@@ -86,7 +86,6 @@ Foam::polymer::constraintModels::exactRods::exactRods(const dictionary& dict)
     target_(),
     step_(),
     trial_(),
-    system_(),
     hessian_()
 {}
 
@@ -213,51 +212,6 @@ void Foam::polymer::constraintModels::exactRods::rescaleRods
 }
 
 
-bool Foam::polymer::constraintModels::exactRods::projectTangent
-(
-    const vector* x,
-    const chainType& type,
-    vector* w
-) const
-{
-    const label n = type.nBeads();
-    const label nRods = type.nRods();
-
-    auto rod = [&](const label k)
-    {
-        return x[(k + 1) % n] - x[k];
-    };
-
-    // (J J^T) mu = J w, with J w = r_k.(w_{k+1} - w_k)
-    system_.resize(nRods);
-    for (label k = 0; k < nRods; ++k)
-    {
-        const vector r(rod(k));
-        const bool hasLower = type.ring() || k > 0;
-        const bool hasUpper = type.ring() || k < nRods - 1;
-        system_.lower()[k] =
-            hasLower ? -(r & rod((k + nRods - 1) % nRods)) : 0;
-        system_.diagonal()[k] = 2*(r & r);
-        system_.upper()[k] = hasUpper ? -(r & rod((k + 1) % nRods)) : 0;
-        system_.source()[k] = r & (w[(k + 1) % n] - w[k]);
-    }
-    if (!system_.solve(type.ring()))
-    {
-        return false;
-    }
-
-    // w -= J^T mu: rod k pulls its beads together by mu_k r_k
-    const UList<scalar>& mu = system_.source();
-    for (label k = 0; k < nRods; ++k)
-    {
-        const vector kick(mu[k]*rod(k));
-        w[k] += kick;
-        w[(k + 1) % n] -= kick;
-    }
-    return true;
-}
-
-
 Foam::List<Foam::vector>
 Foam::polymer::constraintModels::exactRods::descentDirection
 (
@@ -273,7 +227,7 @@ Foam::polymer::constraintModels::exactRods::descentDirection
     // the gradient)
     const label n = type.nBeads();
     const label nRods = type.nRods();
-    const List<scalar> multipliers(system_.source());
+    const List<scalar> multipliers(rodMultipliers(type));
     const List<vector> gradient(step_);
 
     auto dot = [n](const UList<vector>& u, const UList<vector>& v)
@@ -302,7 +256,8 @@ Foam::polymer::constraintModels::exactRods::descentDirection
             Hp[i] -= pull;
             Hp[j] += pull;
         }
-        if (!projectTangent(x, type, Hp.data()))
+        scalar largest;
+        if (!projectOnRods(x, type, Hp.data(), largest))
         {
             return gradient;
         }
@@ -423,12 +378,6 @@ Foam::label Foam::polymer::constraintModels::exactRods::correctChainLengths
     vector* v = chains.velocities().data() + first;
     const vector* xOld = positionsOld.cdata() + first;
 
-    target_ = SubList<vector>(chains.positions(), n, first);
-    const List<vector> velocityStar
-    (
-        SubList<vector>(chains.velocities(), n, first)
-    );
-
     // The paper's projection along the constraint directions, where it
     // has a solution
     const label newtonIter =
@@ -440,10 +389,13 @@ Foam::label Foam::polymer::constraintModels::exactRods::correctChainLengths
     {
         return newtonIter;
     }
+
+    // newton's failed solve left the velocities at v*; the positions
+    // return to x*
+    target_ = startPositions();
     for (label i = 0; i < n; ++i)
     {
         x[i] = target_[i];
-        v[i] = velocityStar[i];
     }
     ++exactSolves_;
 
@@ -454,6 +406,7 @@ Foam::label Foam::polymer::constraintModels::exactRods::correctChainLengths
     // 2. The feasible descent toward x*
     label iter = 0;
     bool converged = false;
+    bool tookRoundOffStep = false;
     while (iter < maxDescentIterations_)
     {
         ++iter;
@@ -463,7 +416,8 @@ Foam::label Foam::polymer::constraintModels::exactRods::correctChainLengths
         {
             step_[i] = target_[i] - x[i];
         }
-        if (!projectTangent(x, type, step_.data()))
+        scalar largest;
+        if (!projectOnRods(x, type, step_.data(), largest))
         {
             break;
         }
@@ -485,12 +439,28 @@ Foam::label Foam::polymer::constraintModels::exactRods::correctChainLengths
         const bool decreased =
             lineSearch(x, preconditioned, type, f)
          || lineSearch(x, gradient, type, f);
-        if (!decreased)
+        if (decreased)
         {
-            // No step shortens the distance: stationary to round-off
+            tookRoundOffStep = false;
+            continue;
+        }
+
+        // Close to the nearest configuration the distance changes by less
+        // than the round-off of the rebuilt chain, and no step is seen to
+        // shorten it: Newton's step then goes as it is, once in a row
+        if (tookRoundOffStep || stepSize > std::sqrt(descentTolerance_)*a)
+        {
+            // Stationary to round-off
             converged = true;
             break;
         }
+        for (label i = 0; i < n; ++i)
+        {
+            x[i] += preconditioned[i];
+        }
+        rescaleRods(x, target_.cdata(), type);
+        f = distance(x, n);
+        tookRoundOffStep = true;
     }
     if (!converged)
     {

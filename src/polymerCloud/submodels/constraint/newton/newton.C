@@ -350,20 +350,16 @@ Foam::label Foam::polymer::constraintModels::newton::correctChainLengths
 }
 
 
-Foam::label Foam::polymer::constraintModels::newton::correctChainVelocities
+bool Foam::polymer::constraintModels::newton::projectOnRods
 (
-    polymerChains& chains,
-    const label chaini,
-    scalar& residual
+    const vector* x,
+    const chainType& type,
+    vector* w,
+    scalar& largest
 ) const
 {
-    const chainType& type = chains.type(chaini);
-    const label first = chains.start(chaini);
     const label n = type.nBeads();
     const label nRods = type.nRods();
-
-    const vector* x = chains.positions().cdata() + first;
-    vector* v = chains.velocities().data() + first;
 
     system_.resize(nRods);
     padRods(x, type, rods_);
@@ -381,10 +377,10 @@ Foam::label Foam::polymer::constraintModels::newton::correctChainVelocities
         lower[k] = -(r[k] & r[k - 1]);
         diagonal[k] = 2*(r[k] & r[k]);
         upper[k] = -(r[k] & r[k + 1]);
-        source[k] = r[k] & (v[j] - v[k]);
+        source[k] = r[k] & (w[j] - w[k]);
     }
 
-    // A failed solve leaves the velocities, and has their residual measured
+    // A failed solve leaves w, and has its residual measured
     const bool solved = system_.solve(type.ring());
     if (solved)
     {
@@ -395,7 +391,27 @@ Foam::label Foam::polymer::constraintModels::newton::correctChainVelocities
         solution_.resize(nRods + 2);
         solution_ = Zero;
     }
-    residual = kick(v, type);
+    largest = kick(w, type);
+
+    return solved;
+}
+
+
+Foam::label Foam::polymer::constraintModels::newton::correctChainVelocities
+(
+    polymerChains& chains,
+    const label chaini,
+    scalar& residual
+) const
+{
+    const chainType& type = chains.type(chaini);
+    const label first = chains.start(chaini);
+    const label n = type.nBeads();
+
+    const vector* x = chains.positions().cdata() + first;
+    vector* v = chains.velocities().data() + first;
+
+    const bool solved = projectOnRods(x, type, v, residual);
     residual /= velocityScale(type, v, n, velocityTolerance_);
 
     return (solved && residual <= velocityTolerance_) ? 1 : -1;

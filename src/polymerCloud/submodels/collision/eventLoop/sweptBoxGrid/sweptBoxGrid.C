@@ -189,15 +189,15 @@ void Foam::polymer::sweptBoxGrid::insert(const label rod)
 void Foam::polymer::sweptBoxGrid::build
 (
     const chainRods& rods,
-    const UList<boundBox>& boxes,
+    List<boundBox>&& boxes,
     const UList<vector>& lattice
 )
 {
     rods_ = &rods;
 
-    box_ = boxes;
+    box_.transfer(boxes);
     scalar largest = 0;
-    for (const boundBox& box : boxes)
+    for (const boundBox& box : box_)
     {
         largest = max(largest, cmptMax(box.span()));
     }
