@@ -21,14 +21,9 @@ Description
     bead uniform, chains with a bead outside drawn again: already the
     equilibrium distribution).
 
-    Exact result: the projection of each rod on the wall normal is uniform
-    on [-a, a] and a configuration counts if every bead is in [0, h]. With
-    g_0 = 1 and g_{m+1}(z) = (1/2a) int_{z-a}^{z+a} g_m(z') 1[0,h](z') dz'
-    (the transfer operator, iterated on a fine grid), g_m(z) is the
-    probability that m further beads along the chain stay inside, so
-        density of bead k (0-based)   p_k(z) ~ g_k(z) g_{N-1-k}(z)
-        partition coefficient         K = (1/h) int_0^h g_{N-1}(z) dz.
-    A Monte Carlo estimate of K checks the transfer integral's numerics.
+    Exact result: the transfer integral of slitExact.H (the densities of
+    each bead across the slit and the partition coefficient K), checked by
+    Monte Carlo.
 
     The measured densities of the end beads (0 and N-1) and of the inner
     beads are histograms (nBins bins across the slit) averaged per chain
@@ -71,8 +66,7 @@ Usage
 #include "statisticalCheck.H"
 #include "evolveStep.H"
 #include "cpuTimeCxx.H"
-#include <random>
-#include <vector>
+#include "slitExact.H"
 
 using namespace Foam;
 using namespace Foam::polymer;
@@ -82,55 +76,6 @@ using namespace polymerCloudTest;
 
 namespace
 {
-
-//- g_0 ... g_{N-1} on a uniform grid of M intervals over [0, h]
-std::vector<std::vector<double>> transferIterates
-(
-    const label N,
-    const double a,
-    const double h,
-    const label M
-)
-{
-    const double dz = h/M;
-    std::vector<std::vector<double>> g(N, std::vector<double>(M + 1, 1.0));
-    std::vector<double> F(M + 1);
-
-    // Cumulative integral of g_m, linearly interpolated
-    auto cumulative = [&](const double z)
-    {
-        const double s = std::min(std::max(z, 0.0), h)/dz;
-        const label j = std::min(label(s), M - 1);
-        const double w = s - j;
-        return (1 - w)*F[j] + w*F[j + 1];
-    };
-
-    for (label m = 1; m < N; ++m)
-    {
-        const std::vector<double>& prev = g[m - 1];
-        F[0] = 0;
-        for (label j = 1; j <= M; ++j)
-        {
-            F[j] = F[j - 1] + 0.5*dz*(prev[j - 1] + prev[j]);
-        }
-        for (label j = 0; j <= M; ++j)
-        {
-            const double z = j*dz;
-            g[m][j] = (cumulative(z + a) - cumulative(z - a))/(2*a);
-        }
-    }
-    return g;
-}
-
-
-//- Trapezoidal integral of f over grid points [j0, j1]
-double integral(const std::vector<double>& f, label j0, label j1, double dz)
-{
-    double s = 0;
-    for (label j = j0; j < j1; ++j) s += 0.5*dz*(f[j] + f[j + 1]);
-    return s;
-}
-
 
 dictionary properties
 (
@@ -304,21 +249,9 @@ int main(int argc, char *argv[])
     const auto g = transferIterates(N, a, h, M);
     const double K = integral(g[N - 1], 0, M, dz)/h;
 
-    auto beadProfile = [&](const label k)
-    {
-        std::vector<double> p(M + 1);
-        for (label j = 0; j <= M; ++j) p[j] = g[k][j]*g[N - 1 - k][j];
-        const double norm = integral(p, 0, M, dz);
-        std::vector<double> bins(nBins);
-        for (label b = 0; b < nBins; ++b)
-        {
-            bins[b] = integral(p, b*M/nBins, (b + 1)*M/nBins, dz)/norm;
-        }
-        return bins;
-    };
-    const std::vector<double> endExact = beadProfile(0);
+    const std::vector<double> endExact = beadProfile(g, 0, nBins, dz);
     const label kInner = N/2;
-    const std::vector<double> innerExact = beadProfile(kInner);
+    const std::vector<double> innerExact = beadProfile(g, kInner, nBins, dz);
 
     // The slit the beads see: levelSet's zero is a clearance from each
     // wall. Its K as a fraction of the true width's: the partition
@@ -335,36 +268,10 @@ int main(int argc, char *argv[])
     const double centreHalf = 0.5*hSeen - (N - 1)*a;
     const bool hasCentre = (centreHalf > 0);
 
-    // Monte Carlo check of K
-    double Kmc = 0, KmcSE = 0;
-    {
-        std::mt19937_64 gen(12345);
-        std::uniform_real_distribution<double> uz(0, h), us(-a, a);
-        const label n = 1000000;
-        label inside = 0;
-        for (label i = 0; i < n; ++i)
-        {
-            double z = uz(gen);
-            bool ok = true;
-            for (label k = 1; k < N && ok; ++k)
-            {
-                z += us(gen);
-                ok = (z >= 0 && z <= h);
-            }
-            if (ok) ++inside;
-        }
-        Kmc = double(inside)/n;
-        KmcSE = std::sqrt(Kmc*(1 - Kmc)/n);
-    }
-
-    // Casassa's asymptote, for information
-    const double Rg2 = a*a*(N*N - 1.0)/(6*N);
-    double Kcasassa = 0;
-    for (label p = 1; p < 200; p += 2)
-    {
-        Kcasassa += 8/(M_PI*M_PI)/(p*p)
-           *std::exp(-p*p*M_PI*M_PI*Rg2/(h*h));
-    }
+    // Monte Carlo check of K, and Casassa's asymptote for information
+    double KmcSE = 0;
+    const double Kmc = monteCarloPartition(N, a, h, 1000000, KmcSE);
+    const double Kcasassa = casassaPartition(N, a, h);
 
     Info<< name.c_str() << ": chains of " << N << " beads (a = 1) between walls"
         << " at z = " << z0 << " and " << z0 + h << " (h = " << h << ")" << nl
@@ -589,6 +496,7 @@ int main(int argc, char *argv[])
         );
     }
     rg2.result(m, se);
+    const double Rg2 = a*a*(N*N - 1.0)/(6*N);
     Info<< "chi^2 of the " << 2*nBins << " bins (each histogram sums to 1:"
         << " about " << 2*(nBins - 1) << " degrees of freedom): " << chi2
         << nl << "<Rg^2> in the slit " << m << " +- " << se

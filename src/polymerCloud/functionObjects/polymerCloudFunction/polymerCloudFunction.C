@@ -11,17 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "polymerCloudFunction.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-    defineTypeNameAndDebug(polymerCloudFunction, 0);
-    defineRunTimeSelectionTable(polymerCloudFunction, dictionary);
-} // End namespace polymer
-}
+makePolymerModelFamily(polymerCloudFunction)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

@@ -11,29 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "collisionModel.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-    defineTypeNameAndDebug(collisionModel, 0);
-    defineRunTimeSelectionTable(collisionModel, dictionary);
-} // End namespace polymer
-}
-
-
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::polymer::collisionModel::collisionModel
-(
-    const word& type,
-    const dictionary& dict
-)
-:
-    countedSubModel<collisionCounters>(type, dict)
-{}
+makePolymerModelFamily(collisionModel)
 
 
 // * * * * * * * * * * * * * * * * * Report  * * * * * * * * * * * * * * * * //

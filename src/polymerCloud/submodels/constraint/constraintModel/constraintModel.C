@@ -11,18 +11,12 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "constraintModel.H"
+#include "makePolymerModel.H"
 #include "checkedInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-    defineTypeNameAndDebug(constraintModel, 0);
-    defineRunTimeSelectionTable(constraintModel, dictionary);
-} // End namespace polymer
-}
+makePolymerModelFamily(constraintModel)
 
 const Foam::Enum<Foam::polymer::constraintModel::failureActionType>
 Foam::polymer::constraintModel::failureActionNames

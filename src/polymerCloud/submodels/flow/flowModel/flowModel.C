@@ -11,17 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "flowModel.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-    defineTypeNameAndDebug(flowModel, 0);
-    defineRunTimeSelectionTable(flowModel, dictionary);
-} // End namespace polymer
-}
+makePolymerModelFamily(flowModel)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

@@ -11,29 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "forceModel.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-    defineTypeNameAndDebug(forceModel, 0);
-    defineRunTimeSelectionTable(forceModel, dictionary);
-} // End namespace polymer
-}
-
-
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::polymer::forceModel::forceModel
-(
-    const word& type,
-    const dictionary& dict
-)
-:
-    polymerSubModel(type, dict)
-{}
+makePolymerModelFamily(forceModel)
 
 
 // ************************************************************************* //

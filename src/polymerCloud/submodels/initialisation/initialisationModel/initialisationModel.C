@@ -11,18 +11,12 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "initialisationModel.H"
+#include "makePolymerModel.H"
 #include "checkedInput.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-    defineTypeNameAndDebug(initialisationModel, 0);
-    defineRunTimeSelectionTable(initialisationModel, dictionary);
-} // End namespace polymer
-}
+makePolymerModelFamily(initialisationModel)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

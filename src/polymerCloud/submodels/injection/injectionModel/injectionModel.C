@@ -11,17 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "injectionModel.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-    defineTypeNameAndDebug(injectionModel, 0);
-    defineRunTimeSelectionTable(injectionModel, dictionary);
-} // End namespace polymer
-}
+makePolymerModelFamily(injectionModel)
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

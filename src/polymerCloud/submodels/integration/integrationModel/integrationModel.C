@@ -11,29 +11,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "integrationModel.H"
+#include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-    defineTypeNameAndDebug(integrationModel, 0);
-    defineRunTimeSelectionTable(integrationModel, dictionary);
-} // End namespace polymer
-}
-
-
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::polymer::integrationModel::integrationModel
-(
-    const word& type,
-    const dictionary& dict
-)
-:
-    polymerSubModel(type, dict)
-{}
+makePolymerModelFamily(integrationModel)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -44,12 +26,16 @@ void Foam::polymer::integrationModel::integrate
     const UList<vector>& driftVelocity,
     const scalar deltaT,
     const label timeIndex,
-    const label seed
+    const label seed,
+    const label subStepKey
 ) const
 {
     for (label c = 0; c < chains.nChains(); ++c)
     {
-        integrateChain(chains, c, driftVelocity, deltaT, timeIndex, seed, 0);
+        integrateChain
+        (
+            chains, c, driftVelocity, deltaT, timeIndex, seed, subStepKey
+        );
     }
 }
 

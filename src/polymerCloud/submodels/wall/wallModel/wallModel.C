@@ -11,19 +11,13 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "wallModel.H"
+#include "makePolymerModel.H"
 #include "wallPolyPatch.H"
 #include "cyclicPolyPatch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-    defineTypeNameAndDebug(wallModel, 0);
-    defineRunTimeSelectionTable(wallModel, dictionary);
-} // End namespace polymer
-}
+makePolymerModelFamily(wallModel)
 
 const Foam::Enum<Foam::polymer::wallModel::interactionType>
 Foam::polymer::wallModel::interactionTypeNames

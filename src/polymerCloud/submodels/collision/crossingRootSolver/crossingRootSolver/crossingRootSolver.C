@@ -11,18 +11,12 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "crossingRootSolver.H"
+#include "makePolymerModel.H"
 #include "polymerSubModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace polymer
-{
-    defineTypeNameAndDebug(crossingRootSolver, 0);
-    defineRunTimeSelectionTable(crossingRootSolver, dictionary);
-} // End namespace polymer
-}
+makePolymerModelFamily(crossingRootSolver)
 
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
