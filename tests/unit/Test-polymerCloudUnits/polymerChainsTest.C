@@ -61,4 +61,39 @@ TEST(polymerChains, ReorderMovesWholeChains)
 }
 
 
+
+// The predicted relative displacement of two free beads over dt (the
+// cloud's sub-cycling by accuracy): 12 (kT/zeta)(dt - tau (1 - exp(-dt/tau)))
+// in rod lengths squared, tau = m/zeta; its limits 12 kT dt/(zeta a^2) for
+// dt >> tau (diffusive) and 6 kT dt^2/(m a^2) for dt << tau (ballistic),
+// each to its first correction (relative tau/dt and dt/(3 tau))
+TEST(chainType, NeighbourDisplacementLimits)
+{
+    const scalar a = 2, m = 0.5, zeta = 4, kT = 1.5;
+    const chainType type("t", 5, a, m, zeta, kT, false);
+    const scalar tau = m/zeta;
+
+    const scalar dtLong = 1e4*tau;
+    EXPECT_NEAR
+    (
+        type.neighbourDisplacementSqr(dtLong)/(12*kT*dtLong/(zeta*a*a)),
+        1, 1.5e-4
+    );
+
+    const scalar dtShort = 1e-4*tau;
+    EXPECT_NEAR
+    (
+        type.neighbourDisplacementSqr(dtShort)
+       /(6*kT*dtShort*dtShort/(m*a*a)),
+        1, 1e-4
+    );
+
+    // At dt = tau exactly: 12 (kT/zeta) tau exp(-1)/a^2
+    EXPECT_NEAR
+    (
+        type.neighbourDisplacementSqr(tau),
+        12*kT/zeta*tau*std::exp(-1.0)/(a*a), 1e-14
+    );
+}
+
 // ************************************************************************* //

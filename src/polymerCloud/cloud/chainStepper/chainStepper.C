@@ -18,7 +18,7 @@ License
 Foam::polymer::chainStepper::chainStepper
 (
     const Time& time,
-    const label seed,
+    const polymerCloudSolution& solution,
     polymerChains& chains,
     flowModel& flow,
     const polymerCoupling& coupling,
@@ -28,7 +28,7 @@ Foam::polymer::chainStepper::chainStepper
 )
 :
     time_(time),
-    seed_(seed),
+    seed_(solution.seed()),
     chains_(chains),
     flow_(flow),
     coupling_(coupling),
@@ -41,7 +41,15 @@ Foam::polymer::chainStepper::chainStepper
     velocityChange_(),
     force_(),
     drift_(),
-    displacementReported_(false)
+    displacementReported_(false),
+    maxNeighbourDisplacement_(solution.maxNeighbourDisplacement()),
+    maxSubCycles_(solution.maxSubCycles()),
+    cycleKey_(0),
+    flowSteps_(0),
+    subCycledSteps_(0),
+    subCycleSteps_(0),
+    largestSubCycles_(1),
+    cappedSteps_(0)
 {}
 
 
@@ -157,7 +165,7 @@ void Foam::polymer::chainStepper::subStepChain
         for (label s = 0; s < nSub && converged; ++s)
         {
             // The fluid velocity stays that at x^n; each sub-step has its
-            // own noise, keyed by (nSub, s)
+            // own noise, keyed by (nSub, s) below the step's own key
             subStepStart = x;
             const List<vector> vSubStart(v);
             integration_.integrateChain
@@ -168,7 +176,7 @@ void Foam::polymer::chainStepper::subStepChain
                 deltaT/nSub,
                 runTime.timeIndex(),
                 seed_,
-                nSub + s
+                (cycleKey_ ? cycleKey_ : 1)*nSub + s
             );
             const List<vector> xSubStar(x);
             const List<vector> vSubStar(v);
@@ -207,7 +215,133 @@ void Foam::polymer::chainStepper::subStepChain
 }
 
 
+Foam::scalar Foam::polymer::chainStepper::predictedDisplacement
+(
+    const chainType& type,
+    const scalar deltaU,
+    const scalar dt
+)
+{
+    return std::sqrt
+    (
+        type.neighbourDisplacementSqr(dt) + sqr(deltaU*dt/type.rodLength())
+    );
+}
+
+
+Foam::scalar Foam::polymer::chainStepper::driftDifference(const label c) const
+{
+    const UList<vector>& u = drift();
+    if (u.size() != chains_.nBeads())
+    {
+        return 0;           // no flow: the beads relax to rest
+    }
+
+    const label first = chains_.start(c);
+    const label n = chains_.size(c);
+    scalar largest = 0;
+    for (label k = 0; k < chains_.type(c).nRods(); ++k)
+    {
+        largest = max
+        (
+            largest, magSqr(u[first + (k + 1) % n] - u[first + k])
+        );
+    }
+    return std::sqrt(largest);
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::polymer::chainStepper::subCycles(const scalar deltaT)
+{
+    if (maxNeighbourDisplacement_ <= 0)
+    {
+        return 1;
+    }
+
+    // The least K with every chain's delta(deltaT/K) within the bound:
+    // delta falls with K, so K only grows over the chains
+    label nCycles = 1;
+    scalar largest = 0;
+    bool capped = false;
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        const chainType& type = chains_.type(c);
+        if (!type.nRods())
+        {
+            continue;
+        }
+        const scalar deltaU = driftDifference(c);
+        largest = max(largest, predictedDisplacement(type, deltaU, deltaT));
+        while
+        (
+            predictedDisplacement(type, deltaU, deltaT/nCycles)
+          > maxNeighbourDisplacement_
+        )
+        {
+            if (nCycles == maxSubCycles_)
+            {
+                capped = true;
+                break;
+            }
+            ++nCycles;
+        }
+    }
+    reduce(nCycles, maxOp<label>());
+    reduce(largest, maxOp<scalar>());
+    reduce(capped, orOp<bool>());
+
+    if (!flowSteps_)
+    {
+        Info<< "polymerCloud: predicted delta/a over the flow's step "
+            << largest << " (maxNeighbourDisplacement "
+            << maxNeighbourDisplacement_ << "): " << nCycles
+            << " polymer step(s) per flow step" << endl;
+    }
+    if (capped && !cappedSteps_)
+    {
+        WarningInFunction
+            << "At time " << time_.value() << " the polymer step needs more"
+            << " than maxSubCycles " << maxSubCycles_ << " sub-cycles of"
+            << " the flow's step " << deltaT << " to keep the predicted"
+            << " delta/a within maxNeighbourDisplacement "
+            << maxNeighbourDisplacement_ << " (largest " << largest
+            << " over the flow's step): taking " << maxSubCycles_
+            << "; such steps are counted in the final report" << endl;
+    }
+
+    ++flowSteps_;
+    if (nCycles > 1)
+    {
+        ++subCycledSteps_;
+        subCycleSteps_ += nCycles;
+        largestSubCycles_ = max(largestSubCycles_, nCycles);
+    }
+    if (capped)
+    {
+        ++cappedSteps_;
+    }
+    return nCycles;
+}
+
+
+void Foam::polymer::chainStepper::writeSubCycleReport(Ostream& os) const
+{
+    if (maxNeighbourDisplacement_ <= 0)
+    {
+        return;
+    }
+
+    os  << "    sub-cycles (maxNeighbourDisplacement "
+        << maxNeighbourDisplacement_ << "): " << subCycledSteps_ << " of "
+        << flowSteps_ << " flow steps in sub-cycles, "
+        << subCycleSteps_ << " polymer steps in them, at most "
+        << largestSubCycles_ << " in a flow step; " << cappedSteps_
+        << " flow steps needed more than maxSubCycles " << maxSubCycles_
+        << nl;
+}
+
 
 void Foam::polymer::chainStepper::start()
 {
@@ -252,7 +386,8 @@ void Foam::polymer::chainStepper::integrate(const scalar deltaT)
         drift(),
         deltaT,
         time_.timeIndex(),
-        seed_
+        seed_,
+        cycleKey_
     );
     recordUnconstrained();
 

@@ -249,26 +249,14 @@ void Foam::polymer::polymerCloud::injectChains(const scalar time)
 }
 
 
-void Foam::polymer::polymerCloud::evolve()
+void Foam::polymer::polymerCloud::evolvePolymerStep
+(
+    const scalar deltaT,
+    const scalar time,
+    const bool firstCycle
+)
 {
-    if (!solution_.active())
-    {
-        return;
-    }
-
-    cpuTime timer;
-
-    const Time& runTime = mesh_.time();
-    const scalar deltaT = runTime.deltaTValue();
-    const scalar time = runTime.value();
-
-    injectChains(time);
-    stepper_->start();
-
     // 1. Unconstrained update in the fluid velocity and forces at x^n
-    stepper_->updateDrift();
-    maxBeadsOutside_ = max(maxBeadsOutside_, flow_->nBeadsOutside());
-    beadStepsOutside_ += flow_->nBeadsOutside();
     stepper_->integrate(deltaT);
 
     for (polymerCloudFunction& function : functions_)
@@ -293,7 +281,8 @@ void Foam::polymer::polymerCloud::evolve()
     // The momentum the chains exchanged with the solvent (two-way): the
     // friction and noise of each bead's path, the constraint's included;
     // the constraint and collision impulses are internal to the chains,
-    // and the walls' to come are not exchanges with the solvent
+    // and the walls' to come are not exchanges with the solvent. The
+    // sub-cycles of a flow step add theirs up
     if (coupling_->twoWay())
     {
         coupling_->deposit
@@ -301,7 +290,8 @@ void Foam::polymer::polymerCloud::evolve()
             chains_,
             stepper_->velocityChange(),
             stepper_->force(),
-            deltaT
+            deltaT,
+            !firstCycle
         );
     }
 
@@ -325,8 +315,57 @@ void Foam::polymer::polymerCloud::evolve()
     }
     distribution_->update();
 
-    evolveSeconds_ += timer.cpuTimeIncrement();
     beadSteps_ += chains_.nBeads();
+}
+
+
+void Foam::polymer::polymerCloud::updateDrift()
+{
+    stepper_->updateDrift();
+    maxBeadsOutside_ = max(maxBeadsOutside_, flow_->nBeadsOutside());
+    beadStepsOutside_ += flow_->nBeadsOutside();
+}
+
+
+void Foam::polymer::polymerCloud::evolve()
+{
+    if (!solution_.active())
+    {
+        return;
+    }
+
+    cpuTime timer;
+
+    const Time& runTime = mesh_.time();
+    const scalar deltaT = runTime.deltaTValue();
+    const scalar time = runTime.value();
+
+    injectChains(time);
+    stepper_->start();
+    updateDrift();
+
+    // The flow's step in nCycles polymer steps (solution's
+    // maxNeighbourDisplacement), each from the fluid velocity and forces
+    // at its own start
+    const label nCycles = stepper_->subCycles(deltaT);
+    for (label cycle = 0; cycle < nCycles; ++cycle)
+    {
+        if (cycle)
+        {
+            stepper_->start();
+            updateDrift();
+        }
+        stepper_->setSubCycle(nCycles, cycle);
+        evolvePolymerStep
+        (
+            deltaT/nCycles,
+            time - deltaT*(nCycles - 1 - cycle)/nCycles,
+            cycle == 0
+        );
+    }
+    stepper_->setSubCycle(1, 0);
+
+    evolveSeconds_ += timer.cpuTimeIncrement();
 
     for (polymerCloudFunction& function : functions_)
     {

@@ -252,7 +252,7 @@ void Foam::polymer::polymerCloud::selectModels(const dictionary& subModels)
         new chainStepper
         (
             mesh_.time(),
-            solution_.seed(),
+            solution_,
             chains_,
             flow_(),
             coupling_(),

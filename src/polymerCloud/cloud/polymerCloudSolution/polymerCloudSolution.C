@@ -39,6 +39,32 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
             1e-6,
             "<relative rod-length mismatch accepted at start>"
         )
+    ),
+    maxNeighbourDisplacement_
+    (
+        properties.optionalSubDict("solution").found
+        (
+            "maxNeighbourDisplacement", keyType::LITERAL
+        )
+      ? checkedInput::positiveScalar
+        (
+            properties.optionalSubDict("solution"),
+            "maxNeighbourDisplacement",
+            "<largest predicted displacement of neighbouring beads in a"
+            " polymer step, in rod lengths>"
+        )
+      : 0
+    ),
+    maxSubCycles_
+    (
+        checkedInput::labelAtLeastOrDefault
+        (
+            properties.optionalSubDict("solution"),
+            "maxSubCycles",
+            64,
+            1,
+            "<most polymer steps per flow step>"
+        )
     )
 {}
 

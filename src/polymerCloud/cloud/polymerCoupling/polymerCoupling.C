@@ -202,11 +202,15 @@ void Foam::polymer::polymerCoupling::deposit
     const polymerChains& chains,
     const UList<vector>& velocityChange,
     const UList<vector>& force,
-    const scalar deltaT
+    const scalar deltaT,
+    const bool accumulate
 )
 {
-    momentumTransfer_.field() = Zero;
-    momentumCoeff_.field() = 0;
+    if (!accumulate)
+    {
+        momentumTransfer_.field() = Zero;
+        momentumCoeff_.field() = 0;
+    }
 
     if (!twoWay_)
     {

@@ -114,6 +114,7 @@ Foam::polymer::cloudFunctions::polymerStress::polymerStress
     ),
     sum_(Zero),
     nSteps_(0),
+    flowSteps_(0),
     blockSum_(Zero),
     blockN_(0),
     blockMeansXY_(),
@@ -236,7 +237,9 @@ Foam::polymer::cloudFunctions::polymerStress::postConstrain(const scalar deltaT)
 
 void Foam::polymer::cloudFunctions::polymerStress::postEvolve()
 {
-    if (!nSteps_ || nSteps_ % interval_ || !Pstream::master())
+    // Lines every interval flow steps; the average is over the polymer
+    // steps (more than the flow steps where the cloud sub-cycles)
+    if (!nSteps_ || ++flowSteps_ % interval_ || !Pstream::master())
     {
         return;
     }
