@@ -34,105 +34,116 @@ using namespace polymerCloudTest;
 // Two perpendicular dimers approaching head-on and off-centre (without the
 // extra velocities below they would meet at lambda_i = 0.3, lambda_j = 0.8),
 // with generic extra velocities (rods turning and stretching) and a generic
-// rotation; the impact time is the isolating solver's root.
+// rotation; the impact time is the isolating solver's root. Beads of equal
+// masses (the paper's closed form) and of masses 1 and 5 either way round.
 TEST(rodCollision, ElasticImpulseConservesMomentaAndEnergy)
 {
-    scene base;
-    base.x = FixedList<vector, 4>
-    ({
-        vector(-0.3, 0, 1), vector(0.7, 0, 1),
-        vector(0, -0.8, -1), vector(0, 0.2, -1)
-    });
-    base.v = FixedList<vector, 4>
-    ({
-        vector(0.1, 0.2, -1), vector(-0.2, 0.1, -0.8),
-        vector(0.05, -0.1, 1.1), vector(0.1, 0.1, 0.9)
-    });
-
-    for (const bool rotated : {false, true})
+    const labelPair massPairs[] = {{1, 1}, {1, 5}, {5, 1}};
+    for (const labelPair& masses : massPairs)
     {
-        const scene sc =
-            rotated
-          ? base.moved(genericRotation(), vector(3.1, -2.7, 0.4))
-          : base;
-        const rodPairCrossing pair = sc.pair();
+        const scalar mI = masses.first(), mJ = masses.second();
+        const FixedList<scalar, 4> m({mI, mI, mJ, mJ});
+        scene base;
+        base.x = FixedList<vector, 4>
+        ({
+            vector(-0.3, 0, 1), vector(0.7, 0, 1),
+            vector(0, -0.8, -1), vector(0, 0.2, -1)
+        });
+        base.v = FixedList<vector, 4>
+        ({
+            vector(0.1, 0.2, -1), vector(-0.2, 0.1, -0.8),
+            vector(0.05, -0.1, 1.1), vector(0.1, 0.1, 0.9)
+        });
 
-        const scalar tau = newSolver("isolating")->earliestCrossing(pair, 2);
-        ASSERT_GT(tau, 0) << "rotated " << rotated;
-
-        FixedList<vector, 4> xImpact;
-        for (label k = 0; k < 4; ++k)
+        for (const bool rotated : {false, true})
         {
-            xImpact[k] = sc.x[k] + tau*sc.v[k];
-        }
+            const scene sc =
+                rotated
+              ? base.moved(genericRotation(), vector(3.1, -2.7, 0.4))
+              : base;
+            const rodPairCrossing pair = sc.pair();
 
-        FixedList<vector, 4> after;
-        ASSERT_TRUE(pair.elasticImpulse(tau, after));
+            const scalar tau =
+                newSolver("isolating")->earliestCrossing(pair, 2);
+            ASSERT_GT(tau, 0) << "rotated " << rotated;
 
-        for (const point& origin : {point(Zero), point(5, -3, 2)})
-        {
-            const invariants before = invariantsOf(xImpact, sc.v, origin);
-            const invariants later = invariantsOf(xImpact, after, origin);
-            const scalar pScale = mag(sc.v[0]) + mag(sc.v[1])
-              + mag(sc.v[2]) + mag(sc.v[3]);
+            FixedList<vector, 4> xImpact;
+            for (label k = 0; k < 4; ++k)
+            {
+                xImpact[k] = sc.x[k] + tau*sc.v[k];
+            }
 
-            EXPECT_LE(mag(later.momentum - before.momentum), 1e-12*pScale);
+            FixedList<vector, 4> after;
+            ASSERT_TRUE(pair.elasticImpulse(tau, after, mI, mJ));
+
+            for (const point& origin : {point(Zero), point(5, -3, 2)})
+            {
+                const invariants before =
+                    invariantsOf(xImpact, sc.v, origin, m);
+                const invariants later =
+                    invariantsOf(xImpact, after, origin, m);
+                const scalar pScale = mI*(mag(sc.v[0]) + mag(sc.v[1]))
+                  + mJ*(mag(sc.v[2]) + mag(sc.v[3]));
+
+                EXPECT_LE(mag(later.momentum - before.momentum), 1e-12*pScale);
+                EXPECT_LE
+                (
+                    mag(later.angularMomentum - before.angularMomentum),
+                    1e-12*before.scale
+                ) << "about " << show(origin) << ", rotated " << rotated
+                  << ", masses " << mI << ' ' << mJ;
+                EXPECT_LE
+                (
+                    mag(later.energy - before.energy), 1e-12*before.energy
+                );
+            }
+
+            // Relative normal velocity at the contact point reverses
+            // The lines meet within both rods at tau: the two contact points
+            // coincide (to the root's round-off)
+            scalar li, lj;
+            ASSERT_TRUE(pair.intersection(tau, li, lj));
+            EXPECT_GT(li, 0);
+            EXPECT_LT(li, 1);
+            EXPECT_GT(lj, 0);
+            EXPECT_LT(lj, 1);
             EXPECT_LE
             (
-                mag(later.angularMomentum - before.angularMomentum),
-                1e-12*before.scale
-            ) << "about " << show(origin) << ", rotated " << rotated;
-            EXPECT_LE
+                mag
+                (
+                    ((1 - li)*xImpact[0] + li*xImpact[1])
+                  - ((1 - lj)*xImpact[2] + lj*xImpact[3])
+                ),
+                1e-12
+            );
+            const vector n0 =
+                (xImpact[1] - xImpact[0]) ^ (xImpact[3] - xImpact[2]);
+            const vector n = n0/mag(n0);
+            auto normalVelocity = [&](const FixedList<vector, 4>& u)
+            {
+                return
+                    (((1 - li)*u[0] + li*u[1]) - ((1 - lj)*u[2] + lj*u[3])) & n;
+            };
+            const scalar uBefore = normalVelocity(sc.v);
+            const scalar uAfter = normalVelocity(after);
+            EXPECT_LT(uBefore*uAfter, 0);
+            EXPECT_NEAR(uAfter, -uBefore, 1e-12*mag(uBefore));
+
+            // Tangential parts and the rods' length rates are unchanged (the
+            // impulse is along n, normal to both rods)
+            EXPECT_NEAR
             (
-                mag(later.energy - before.energy), 1e-12*before.energy
+                (after[1] - after[0]) & (xImpact[1] - xImpact[0]),
+                (sc.v[1] - sc.v[0]) & (xImpact[1] - xImpact[0]),
+                1e-12
+            );
+            EXPECT_NEAR
+            (
+                (after[3] - after[2]) & (xImpact[3] - xImpact[2]),
+                (sc.v[3] - sc.v[2]) & (xImpact[3] - xImpact[2]),
+                1e-12
             );
         }
-
-        // Relative normal velocity at the contact point reverses
-        // The lines meet within both rods at tau: the two contact points
-        // coincide (to the root's round-off)
-        scalar li, lj;
-        ASSERT_TRUE(pair.intersection(tau, li, lj));
-        EXPECT_GT(li, 0);
-        EXPECT_LT(li, 1);
-        EXPECT_GT(lj, 0);
-        EXPECT_LT(lj, 1);
-        EXPECT_LE
-        (
-            mag
-            (
-                ((1 - li)*xImpact[0] + li*xImpact[1])
-              - ((1 - lj)*xImpact[2] + lj*xImpact[3])
-            ),
-            1e-12
-        );
-        const vector n0 =
-            (xImpact[1] - xImpact[0]) ^ (xImpact[3] - xImpact[2]);
-        const vector n = n0/mag(n0);
-        auto normalVelocity = [&](const FixedList<vector, 4>& u)
-        {
-            return
-                (((1 - li)*u[0] + li*u[1]) - ((1 - lj)*u[2] + lj*u[3])) & n;
-        };
-        const scalar uBefore = normalVelocity(sc.v);
-        const scalar uAfter = normalVelocity(after);
-        EXPECT_LT(uBefore*uAfter, 0);
-        EXPECT_NEAR(uAfter, -uBefore, 1e-12*mag(uBefore));
-
-        // Tangential parts and the rods' length rates are unchanged (the
-        // impulse is along n, normal to both rods)
-        EXPECT_NEAR
-        (
-            (after[1] - after[0]) & (xImpact[1] - xImpact[0]),
-            (sc.v[1] - sc.v[0]) & (xImpact[1] - xImpact[0]),
-            1e-12
-        );
-        EXPECT_NEAR
-        (
-            (after[3] - after[2]) & (xImpact[3] - xImpact[2]),
-            (sc.v[3] - sc.v[2]) & (xImpact[3] - xImpact[2]),
-            1e-12
-        );
     }
 }
 

@@ -223,6 +223,7 @@ void Foam::polymer::collisionModels::elasticRods::resolveWall
 bool Foam::polymer::collisionModels::elasticRods::resolve
 (
     const event& e,
+    const polymerChains& chains,
     UList<vector>& velocitiesDagger
 )
 {
@@ -248,7 +249,16 @@ bool Foam::polymer::collisionModels::elasticRods::resolve
     );
 
     FixedList<vector, 4> after;
-    if (!pair.elasticImpulse(0, after))
+    if
+    (
+        !pair.elasticImpulse
+        (
+            0,
+            after,
+            chains.type(chains.chainOf(beads[0])).beadMass(),
+            chains.type(chains.chainOf(beads[2])).beadMass()
+        )
+    )
     {
         return false;
     }
@@ -417,7 +427,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
             continue;
         }
 
-        if (!resolve(e, vDagger))
+        if (!resolve(e, chains, vDagger))
         {
             continue;
         }

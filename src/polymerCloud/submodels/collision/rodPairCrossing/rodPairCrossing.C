@@ -109,7 +109,9 @@ bool Foam::polymer::rodPairCrossing::crossesAt(const scalar s) const
 bool Foam::polymer::rodPairCrossing::elasticImpulse
 (
     const scalar s,
-    FixedList<vector, 4>& velocitiesAfter
+    FixedList<vector, 4>& velocitiesAfter,
+    const scalar massI,
+    const scalar massJ
 ) const
 {
     scalar lambdaI, lambdaJ;
@@ -133,18 +135,36 @@ bool Foam::polymer::rodPairCrossing::elasticImpulse
     const scalar vj = v[2] & n;
     const scalar vj1 = v[3] & n;
 
-    // The paper's solution of the conservation laws for equal masses
-    const scalar J =
-        (
-            -vi*(1 - lambdaI) - vi1*lambdaI
-          + vj*(1 - lambdaJ) + vj1*lambdaJ
-        )
-       /(1 - lambdaI*(1 - lambdaI) - lambdaJ*(1 - lambdaJ));
+    // Minus the relative normal velocity at the contact point
+    const scalar minusU =
+        -vi*(1 - lambdaI) - vi1*lambdaI + vj*(1 - lambdaJ) + vj1*lambdaJ;
 
-    velocitiesAfter[0] = v[0] + J*(1 - lambdaI)*n;
-    velocitiesAfter[1] = v[1] + J*lambdaI*n;
-    velocitiesAfter[2] = v[2] - J*(1 - lambdaJ)*n;
-    velocitiesAfter[3] = v[3] - J*lambdaJ*n;
+    if (massI == massJ)
+    {
+        // The paper's solution of the conservation laws for equal masses
+        // (the masses cancel)
+        const scalar J =
+            minusU/(1 - lambdaI*(1 - lambdaI) - lambdaJ*(1 - lambdaJ));
+
+        velocitiesAfter[0] = v[0] + J*(1 - lambdaI)*n;
+        velocitiesAfter[1] = v[1] + J*lambdaI*n;
+        velocitiesAfter[2] = v[2] - J*(1 - lambdaJ)*n;
+        velocitiesAfter[3] = v[3] - J*lambdaJ*n;
+        return true;
+    }
+
+    // J = -2u/sum(w_k^2/m_k); bead k's velocity changes by J w_k n/m_k
+    const scalar J =
+        2*minusU
+       /(
+            (sqr(1 - lambdaI) + sqr(lambdaI))/massI
+          + (sqr(1 - lambdaJ) + sqr(lambdaJ))/massJ
+        );
+
+    velocitiesAfter[0] = v[0] + (J*(1 - lambdaI)/massI)*n;
+    velocitiesAfter[1] = v[1] + (J*lambdaI/massI)*n;
+    velocitiesAfter[2] = v[2] - (J*(1 - lambdaJ)/massJ)*n;
+    velocitiesAfter[3] = v[3] - (J*lambdaJ/massJ)*n;
 
     return true;
 }
