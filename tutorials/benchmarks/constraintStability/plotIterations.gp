@@ -14,9 +14,10 @@ set style line 1 lc rgb "#b2182b" pt 7 ps 1.4 lw 2
 set style line 2 lc rgb "#ef8a62" pt 5 ps 1.4 lw 2
 set style line 3 lc rgb "#2166ac" pt 9 ps 1.6 lw 2
 set style line 4 lc rgb "#1b7837" pt 13 ps 1.6 lw 2
-methods = "SHAKE-start SHAKE-end RATTLE newton"
-names = "SHAKE\\_start SHAKE\\_end RATTLE newton"
-open(i) = (i == 1 ? 6 : i == 2 ? 4 : i == 3 ? 8 : 12)
+set style line 5 lc rgb "#762a83" pt 3 ps 1.8 lw 2
+methods = "SHAKE-start SHAKE-end RATTLE newton exactRods"
+names = "SHAKE\\_start SHAKE\\_end RATTLE newton exactRods"
+open(i) = (i == 1 ? 6 : i == 2 ? 4 : i == 3 ? 8 : i == 4 ? 12 : 1)
 runs(s, m, st) = sprintf("< awk '$1 == \"%s\" && $2 == \"%s\" && $3 == 20000 && $5 == %d && $7 > 0 { print $4, $7 }' data/stability.dat | sort -g", s, m, st)
 
 set xlabel "deltaT"
@@ -24,11 +25,11 @@ set ylabel "iterations per solve, mean over the run"
 set key center right
 do for [s in "trefoil extension"] {
     set title (s eq "trefoil" ? "(a) trefoil, 400 beads, T = 10" : "(b) extension, 100 beads, Wi = 34, T = 60")
-    set xrange [0.005:0.4]
+    set xrange [0.005:0.6]
     if (s eq "trefoil") { set key center right } else { set key at graph 0.02, graph 0.62 left top Left reverse }
-    plot for [i=1:4] runs(s, word(methods, i), 1) using 1:2 \
+    plot for [i=1:5] runs(s, word(methods, i), 1) using 1:2 \
             with linespoints ls i title word(names, i), \
-         for [i=1:4] runs(s, word(methods, i), 0) using 1:2 \
+         for [i=1:5] runs(s, word(methods, i), 0) using 1:2 \
             with points ls i pt open(i) title (i == 1 ? "stopped runs (open)" : "")
 }
 
@@ -39,6 +40,6 @@ set ylabel "iterations per solve, every 10 steps"
 set xrange [0.1:1]
 set key at graph 0.98, graph 0.55 right top Right noreverse
 stats(m) = sprintf("runs/extension/%s_20000_0.01/postProcessing/polymerCloud/0/statistics.dat", m)
-plot for [i=1:4] stats(word(methods, i)) using (sqrt($4)/99):($8 > 0 ? $8 : 1/0) \
+plot for [i=1:5] stats(word(methods, i)) using (sqrt($4)/99):($8 > 0 ? $8 : 1/0) \
         with points ls i ps 0.6 title word(names, i)
 unset multiplot

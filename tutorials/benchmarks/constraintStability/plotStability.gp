@@ -1,8 +1,10 @@
 # Largest stable time step per method and case (data/largest.dat, written
 # by summarise): one marker per method; bars up to the first unstable step.
+# exactRods, stable at every step tried, has no bar: its marker is the
+# largest step tried.
 set terminal pngcairo size 1300,650 font "DejaVu Sans,12"
 set output "stability.png"
-set title "Largest stable deltaT (markers) and smallest unstable deltaT tried (top of the bar)\nexactOU; failureAction stop; maxIterations 20000 (newton 50)"
+set title "Largest stable deltaT (markers) and smallest unstable deltaT tried (top of the bar)\nexactOU; failureAction stop; maxIterations 20000 (newton, exactRods 50); exactRods: stable at every step tried (no bar)"
 set ylabel "deltaT (reduced units; a = kT = 1)"
 set logscale y
 set format y "10^{%L}"
@@ -21,15 +23,16 @@ set style line 3 lc rgb "#2166ac" pt 9 ps 1.8
 set style line 4 lc rgb "#67a9cf" pt 11 ps 1.8
 set style line 5 lc rgb "#1b7837" pt 13 ps 1.8
 set style line 6 lc rgb "#7fbf7b" pt 15 ps 1.6
+set style line 7 lc rgb "#762a83" pt 3 ps 2.2 lw 2
 m(s) = (s eq "SHAKE-start" ? 0 : s eq "SHAKE-end" ? 1 : s eq "RATTLE" ? 2 : \
         s eq "RATTLE-end" ? 3 : s eq "newton" ? 4 : 5)
 off(s) = (m(s) - 2.5)*0.12
 sel(s, v) = (strcol(3) eq s ? v : 1/0)
-names = "SHAKE-start SHAKE-end RATTLE RATTLE-end newton newton-end"
-titles = "SHAKE\\_start SHAKE\\_end RATTLE\\_start RATTLE\\_end newton\\_start newton\\_end"
-plot for [i=1:6] "data/largest.dat" \
-        using ($1 + (i - 3.5)*0.13):(sel(word(names, i), $4)):($4):(strcol(5) eq "-" ? $4 : $5) \
+names = "SHAKE-start SHAKE-end RATTLE RATTLE-end newton newton-end exactRods"
+titles = "SHAKE\\_start SHAKE\\_end RATTLE\\_start RATTLE\\_end newton\\_start newton\\_end exactRods"
+plot for [i=1:7] "data/largest.dat" \
+        using ($1 + (i - 4)*0.115):(sel(word(names, i), $4)):($4):(strcol(5) eq "-" ? $4 : $5) \
         with yerrorbars ls i lw 1.5 pt 0 notitle, \
-     for [i=1:6] "data/largest.dat" \
-        using ($1 + (i - 3.5)*0.13):(sel(word(names, i), $4)) \
+     for [i=1:7] "data/largest.dat" \
+        using ($1 + (i - 4)*0.115):(sel(word(names, i), $4)) \
         with points ls i title word(titles, i)
