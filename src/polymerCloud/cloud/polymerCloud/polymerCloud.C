@@ -306,6 +306,7 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
     (
         chains_, stepper_->positionsOld(), deltaT, time, wall_.get()
     );
+    stepper_->reprojectAfterContacts(deltaT, time);
     collisionGroups_->checkBoxes();
     rejectChains();
     removeEscapedChains();

@@ -116,6 +116,7 @@ void Foam::polymer::polymerCloud::writeReport(Ostream& os) const
         model.writeReport(os);
     }
     stepper_->writeSubCycleReport(os);
+    stepper_->writeReprojectionReport(os);
     os
         << "    chains injected " << returnReduce(nInjected_, sumOp<label>())
         << ", chains carried across cyclic patches "

@@ -13,6 +13,19 @@ License
 #include "polymerCloudSolution.H"
 #include "checkedInput.H"
 
+// * * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * //
+
+const Foam::Enum
+<
+    Foam::polymer::polymerCloudSolution::contactTreatmentType
+>
+Foam::polymer::polymerCloudSolution::contactTreatmentNames
+({
+    { contactTreatmentType::hierarchical, "hierarchical" },
+    { contactTreatmentType::reproject, "reproject" },
+});
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::polymer::polymerCloudSolution::polymerCloudSolution
@@ -64,6 +77,15 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
             64,
             1,
             "<most polymer steps per flow step>"
+        )
+    ),
+    contactTreatment_
+    (
+        contactTreatmentNames.getOrDefault
+        (
+            "contactTreatment",
+            properties.optionalSubDict("solution"),
+            contactTreatmentType::hierarchical
         )
     )
 {}
