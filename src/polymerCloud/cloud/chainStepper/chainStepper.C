@@ -298,6 +298,57 @@ bool Foam::polymer::chainStepper::reprojectChain
 }
 
 
+void Foam::polymer::chainStepper::restoreChain
+(
+    const label c,
+    const List<point>& positionsBefore,
+    const List<vector>& velocitiesBefore
+)
+{
+    for (label i = chains_.start(c); i < chains_.end(c); ++i)
+    {
+        chains_.positions()[i] = positionsBefore[i];
+        chains_.velocities()[i] = velocitiesBefore[i];
+    }
+}
+
+
+void Foam::polymer::chainStepper::undoWallReprojections
+(
+    const wallModel& wall,
+    const List<point>& positionsBefore,
+    const List<vector>& velocitiesBefore,
+    boolList& projected
+)
+{
+    const List<vector>& x = chains_.positions();
+    wallModel::impact hit;
+    forAll(projected, c)
+    {
+        if (!projected[c])
+        {
+            continue;
+        }
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        {
+            if
+            (
+                wall.predict
+                (
+                    positionsBefore[i], x[i] - positionsBefore[i], 1, hit
+                )
+            )
+            {
+                restoreChain(c, positionsBefore, velocitiesBefore);
+                projected[c] = false;
+                ++reprojectionsUndone_;
+                break;
+            }
+        }
+    }
+}
+
+
 void Foam::polymer::chainStepper::undoCrossingReprojections
 (
     const List<point>& positionsBefore,
@@ -332,11 +383,7 @@ void Foam::polymer::chainStepper::undoCrossingReprojections
                 {
                     continue;
                 }
-                for (label i = chains_.start(c); i < chains_.end(c); ++i)
-                {
-                    chains_.positions()[i] = positionsBefore[i];
-                    chains_.velocities()[i] = velocitiesBefore[i];
-                }
+                restoreChain(c, positionsBefore, velocitiesBefore);
                 projected[c] = false;
                 ++nUndone;
             }
@@ -455,7 +502,8 @@ void Foam::polymer::chainStepper::writeSubCycleReport(Ostream& os) const
 void Foam::polymer::chainStepper::reprojectAfterContacts
 (
     const scalar deltaT,
-    const scalar time
+    const scalar time,
+    const wallModel* wall
 )
 {
     const scalar tolerance = constraint_.lengthTolerance();
@@ -491,16 +539,19 @@ void Foam::polymer::chainStepper::reprojectAfterContacts
         )
         {
             // As the contacts left it
-            for (label i = chains_.start(c); i < chains_.end(c); ++i)
-            {
-                chains_.positions()[i] = positionsBefore[i];
-                chains_.velocities()[i] = velocitiesBefore[i];
-            }
+            restoreChain(c, positionsBefore, velocitiesBefore);
             projected[c] = false;
         }
     }
     reprojected_ += nOff;
 
+    if (wall && wall->active())
+    {
+        undoWallReprojections
+        (
+            *wall, positionsBefore, velocitiesBefore, projected
+        );
+    }
     undoCrossingReprojections
     (
         positionsBefore, velocitiesBefore, projected, time
@@ -519,7 +570,7 @@ void Foam::polymer::chainStepper::writeReprojectionReport(Ostream& os) const
         << returnReduce(scalar(reprojected_), sumOp<scalar>())
         << ", not converged "
         << returnReduce(scalar(reprojectionFailures_), sumOp<scalar>())
-        << ", undone because their paths crossed a rod "
+        << ", undone because their paths crossed a wall or a rod "
         << returnReduce(scalar(reprojectionsUndone_), sumOp<scalar>())
         << ", crossings left "
         << returnReduce(scalar(reprojectionCrossings_), sumOp<scalar>())

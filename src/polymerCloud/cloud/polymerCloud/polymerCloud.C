@@ -306,7 +306,7 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
     (
         chains_, stepper_->positionsOld(), deltaT, time, wall_.get()
     );
-    stepper_->reprojectAfterContacts(deltaT, time);
+    stepper_->reprojectAfterContacts(deltaT, time, wall_.get());
     collisionGroups_->checkBoxes();
     rejectChains();
     removeEscapedChains();

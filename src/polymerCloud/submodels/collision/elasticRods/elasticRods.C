@@ -21,6 +21,16 @@ License
 
 makePolymerModel(collisionModel, collisionModels, elasticRods)
 
+const Foam::Enum
+<
+    Foam::polymer::collisionModels::elasticRods::impulseType
+>
+Foam::polymer::collisionModels::elasticRods::impulseTypeNames
+({
+    { impulseType::dumbbell, "dumbbell" },
+    { impulseType::constrained, "constrained" },
+});
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -57,6 +67,13 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
         )
     ),
     audit_(coeffDict_.getOrDefault<bool>("audit", false)),
+    impulse_
+    (
+        impulseTypeNames.getOrDefault
+        (
+            "impulse", coeffDict_, impulseType::dumbbell
+        )
+    ),
     rods_(),
     position_(),
     velocity_(),
@@ -64,7 +81,10 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     grid_(),
     queue_(),
     snapshots_(),
-    wall_(nullptr)
+    wall_(nullptr),
+    response_(),
+    projection_(),
+    changedBeads_()
 {}
 
 
@@ -220,6 +240,145 @@ void Foam::polymer::collisionModels::elasticRods::resolveWall
 }
 
 
+void Foam::polymer::collisionModels::elasticRods::addWeights
+(
+    const polymerChains& chains,
+    const label chaini,
+    const label bead,
+    const scalar weight0,
+    const scalar weight1,
+    const vector& n
+)
+{
+    const label k = bead - chains.start(chaini);
+    const label k1 = (k + 1 < chains.size(chaini)) ? k + 1 : 0;
+    response_[k] += weight0*n;
+    response_[k1] += weight1*n;
+}
+
+
+bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
+(
+    const event& e,
+    const polymerChains& chains,
+    UList<vector>& velocitiesDagger
+)
+{
+    const FixedList<label, 4>& beads = e.beads;
+    const vector& shift = grid_.pairShift(e.pair);
+    const rodPairCrossing pair
+    (
+        position_[beads[0]], position_[beads[1]],
+        position_[beads[2]] + shift, position_[beads[3]] + shift,
+        velocity_[beads[0]], velocity_[beads[1]],
+        velocity_[beads[2]], velocity_[beads[3]]
+    );
+    scalar lambdaI, lambdaJ;
+    vector n;
+    if (!pair.contact(0, lambdaI, lambdaJ, n))
+    {
+        return false;
+    }
+
+    // The chains at the impact; each one's response to the unit impulse
+    // (J = 1) projected onto the motions that keep its rods, over m
+    const label chainI = chains.chainOf(beads[0]);
+    const label chainJ = chains.chainOf(beads[2]);
+    const label nChains = (chainI == chainJ) ? 1 : 2;
+    FixedList<label, 2> chainList({chainI, chainJ});
+    DynamicList<vector> responses;
+    for (label k = 0; k < nChains; ++k)
+    {
+        const label c = chainList[k];
+        const label first = chains.start(c);
+        for (label i = first; i < chains.end(c); ++i)
+        {
+            position_[i] = positionAt(i, e.time);
+            beadTime_[i] = e.time;
+        }
+
+        response_.resize(chains.size(c));
+        response_ = Zero;
+        if (c == chainI)
+        {
+            addWeights(chains, c, beads[0], 1 - lambdaI, lambdaI, n);
+        }
+        if (c == chainJ)
+        {
+            addWeights(chains, c, beads[2], lambdaJ - 1, -lambdaJ, n);
+        }
+        scalar largest;
+        if
+        (
+            !projection_.project
+            (
+                position_.cdata() + first, chains.type(c),
+                response_.data(), largest
+            )
+        )
+        {
+            return false;
+        }
+        const scalar inverseMass = 1/chains.type(c).beadMass();
+        for (const vector& r : response_)
+        {
+            responses.append(inverseMass*r);
+        }
+    }
+
+    // The contact's relative normal velocity, and its change per unit J
+    auto contactVelocity = [&](const UList<vector>& u, const label offsetJ)
+    {
+        const label sI = chains.start(chainI);
+        const label sJ = chains.start(chainJ);
+        auto at = [&](const label bead, const label s0, const label offset)
+        {
+            return u[offset + bead - s0];
+        };
+        return
+        (
+            (1 - lambdaI)*at(beads[0], sI, 0) + lambdaI*at(beads[1], sI, 0)
+          - (1 - lambdaJ)*at(beads[2], sJ, offsetJ)
+          - lambdaJ*at(beads[3], sJ, offsetJ)
+        ) & n;
+    };
+    const label offsetJ = (nChains == 2) ? chains.size(chainI) : 0;
+    const scalar response = contactVelocity(responses, offsetJ);
+    FixedList<vector, 4> v4;
+    for (label k = 0; k < 4; ++k)
+    {
+        v4[k] = velocity_[beads[k]];
+    }
+    const scalar u =
+        (
+            (1 - lambdaI)*v4[0] + lambdaI*v4[1]
+          - (1 - lambdaJ)*v4[2] - lambdaJ*v4[3]
+        ) & n;
+    if (response <= 0)
+    {
+        return false;
+    }
+    const scalar J = -2*u/response;
+
+    changedBeads_.clear();
+    label offset = 0;
+    for (label k = 0; k < nChains; ++k)
+    {
+        const label c = chainList[k];
+        for (label i = chains.start(c); i < chains.end(c); ++i)
+        {
+            const vector dv = J*responses[offset + i - chains.start(c)];
+            velocity_[i] += dv;
+            velocitiesDagger[i] += dv;
+            queue_.changedCourse(i);
+            changedBeads_.append(i);
+        }
+        offset += chains.size(c);
+    }
+    return true;
+}
+
+
 bool Foam::polymer::collisionModels::elasticRods::resolve
 (
     const event& e,
@@ -237,6 +396,15 @@ bool Foam::polymer::collisionModels::elasticRods::resolve
         position_[bead] =
             positionAt(bead, e.from) + e.offset*velocity_[bead];
         beadTime_[bead] = e.time;
+    }
+
+    if
+    (
+        impulse_ == impulseType::constrained
+     && resolveConstrained(e, chains, velocitiesDagger)
+    )
+    {
+        return true;
     }
 
     const vector& shift = grid_.pairShift(pairi);
@@ -269,6 +437,15 @@ bool Foam::polymer::collisionModels::elasticRods::resolve
         velocitiesDagger[bead] += after[k] - velocity_[bead];
         velocity_[bead] = after[k];
         queue_.changedCourse(bead);
+    }
+
+    // The four beads, in the order of the pair's rods
+    const labelPair& rods = grid_.pairs()[pairi];
+    changedBeads_.clear();
+    for (const label rod : {rods.first(), rods.second()})
+    {
+        changedBeads_.append(rods_[rod].first());
+        changedBeads_.append(rods_[rod].second());
     }
 
     return true;
@@ -396,6 +573,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
 
     // Multi-collision loop: earliest event first
     label nEvents = 0;
+    label nWallEvents = 0;
     label nShort = 0;
     scalar now = 0;
     bool stalled = false;
@@ -408,9 +586,12 @@ void Foam::polymer::collisionModels::elasticRods::correct
         nShort = (e.time - now < stallTime_*deltaT) ? nShort + 1 : 0;
         now = e.time;
 
-        if (nShort >= stallEvents_ || nEvents >= maxEvents_)
+        if (nShort >= stallEvents_ || nEvents + nWallEvents >= maxEvents_)
         {
-            reportStall(chains, e.pair, time - deltaT + now, nEvents);
+            reportStall
+            (
+                chains, e.pair, time - deltaT + now, nEvents + nWallEvents
+            );
             stalled = true;
             break;
         }
@@ -422,6 +603,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
 
         if (wallEvent)
         {
+            ++nWallEvents;
             resolveWall(e, vDagger);
             repredict(-1 - e.pair, now, deltaT);
             continue;
@@ -429,6 +611,18 @@ void Foam::polymer::collisionModels::elasticRods::correct
 
         if (!resolve(e, chains, vDagger))
         {
+            // No contact to push along: the rods will pass through each
+            // other unless a later event turns them
+            if (!totalCounters_.unresolved && !counters_.unresolved)
+            {
+                WarningInFunction
+                    << "A rod-rod event at time " << time - deltaT + now
+                    << " (beads " << e.beads << ") has no contact normal"
+                    << " (rods parallel without overlap): not resolved;"
+                    << " such events are counted in the final report"
+                    << endl;
+            }
+            ++counters_.unresolved;
             continue;
         }
         ++nEvents;
@@ -442,13 +636,10 @@ void Foam::polymer::collisionModels::elasticRods::correct
                 << snapshots_.size() - 1 << endl;
         }
 
-        // Re-predict every event of the four beads
-        for (const label rod : {pair.first(), pair.second()})
+        // Re-predict every event of the beads whose course changed
+        for (const label bead : changedBeads_)
         {
-            for (const label bead : {rods_[rod].first(), rods_[rod].second()})
-            {
-                repredict(bead, now, deltaT);
-            }
+            repredict(bead, now, deltaT);
         }
     }
 

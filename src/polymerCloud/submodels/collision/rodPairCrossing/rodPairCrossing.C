@@ -106,18 +106,73 @@ bool Foam::polymer::rodPairCrossing::crossesAt(const scalar s) const
 }
 
 
-bool Foam::polymer::rodPairCrossing::elasticImpulse
+bool Foam::polymer::rodPairCrossing::parallelContact
 (
     const scalar s,
-    FixedList<vector, 4>& velocitiesAfter,
-    const scalar massI,
-    const scalar massJ
+    scalar& lambdaI,
+    scalar& lambdaJ,
+    vector& n
 ) const
 {
-    scalar lambdaI, lambdaJ;
-    if (!intersection(s, lambdaI, lambdaJ))
+    const vector xi = x[0] + s*v[0];
+    const vector xj = x[2] + s*v[2];
+    const vector b = (x[1] + s*v[1]) - xi;
+    const vector c = (x[3] + s*v[3]) - xj;
+    const scalar bb = b & b;
+    const scalar cc = c & c;
+    if (bb < VSMALL || cc < VSMALL)
     {
         return false;
+    }
+
+    // The overlap of rod J's projection on rod I: its middle is the
+    // contact on rod I, and its projection on rod J the contact there
+    const scalar t0 = ((xj - xi) & b)/bb;
+    const scalar t1 = ((xj + c - xi) & b)/bb;
+    const scalar low = max(scalar(0), min(t0, t1));
+    const scalar high = min(scalar(1), max(t0, t1));
+    if (low > high)
+    {
+        return false;
+    }
+    lambdaI = 0.5*(low + high);
+    const vector contactI = xi + lambdaI*b;
+    lambdaJ = min(max(((contactI - xj) & c)/cc, scalar(0)), scalar(1));
+    const vector contactJ = xj + lambdaJ*c;
+
+    // Normal to rod I: along the rods' separation, or, where they touch,
+    // along the contact points' relative velocity
+    const vector along = b/std::sqrt(bb);
+    vector normal = contactI - contactJ;
+    normal -= (normal & along)*along;
+    if (magSqr(normal) <= SMALL*bb)
+    {
+        normal =
+            ((1 - lambdaI)*v[0] + lambdaI*v[1])
+          - ((1 - lambdaJ)*v[2] + lambdaJ*v[3]);
+        normal -= (normal & along)*along;
+    }
+    const scalar magNormal = mag(normal);
+    if (magNormal < VSMALL)
+    {
+        return false;
+    }
+    n = normal/magNormal;
+    return true;
+}
+
+
+bool Foam::polymer::rodPairCrossing::contact
+(
+    const scalar s,
+    scalar& lambdaI,
+    scalar& lambdaJ,
+    vector& n
+) const
+{
+    if (!intersection(s, lambdaI, lambdaJ))
+    {
+        return parallelContact(s, lambdaI, lambdaJ, n);
     }
 
     const vector b = (x[1] + s*v[1]) - (x[0] + s*v[0]);
@@ -128,7 +183,25 @@ bool Foam::polymer::rodPairCrossing::elasticImpulse
     {
         return false;
     }
-    const vector n = normal/magNormal;
+    n = normal/magNormal;
+    return true;
+}
+
+
+bool Foam::polymer::rodPairCrossing::elasticImpulse
+(
+    const scalar s,
+    FixedList<vector, 4>& velocitiesAfter,
+    const scalar massI,
+    const scalar massJ
+) const
+{
+    scalar lambdaI, lambdaJ;
+    vector n;
+    if (!contact(s, lambdaI, lambdaJ, n))
+    {
+        return false;
+    }
 
     const scalar vi = v[0] & n;
     const scalar vi1 = v[1] & n;

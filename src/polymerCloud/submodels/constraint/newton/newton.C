@@ -68,32 +68,12 @@ Foam::polymer::constraintModels::newton::newton
     reference_(),
     rods_(),
     system_(),
-    solution_()
+    solution_(),
+    velocityProjection_()
 {}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::polymer::constraintModels::newton::padRods
-(
-    const vector* x,
-    const chainType& type,
-    DynamicList<vector>& rods
-)
-{
-    const label n = type.nBeads();
-    const label nRods = type.nRods();
-
-    rods.resize(nRods + 2);
-    for (label k = 0; k < nRods; ++k)
-    {
-        const label j = (k + 1 < n) ? k + 1 : 0;
-        rods[k + 1] = x[j] - x[k];
-    }
-    rods[0] = type.ring() ? rods[nRods] : vector::zero;
-    rods[nRods + 1] = type.ring() ? rods[1] : vector::zero;
-}
-
 
 void
 Foam::polymer::constraintModels::newton::padSolution
@@ -170,36 +150,6 @@ void Foam::polymer::constraintModels::newton::shift
         x[k] -= dx;
         x[j] += dx;
     }
-}
-
-
-Foam::scalar Foam::polymer::constraintModels::newton::kick
-(
-    vector* v,
-    const chainType& type
-) const
-{
-    const label n = type.nBeads();
-
-    // r[k] is rod k and m[k] its kick, r[k - 1], m[k - 1] its neighbour's:
-    // bead i's velocity changes by m[i] r[i] - m[i - 1] r[i - 1]
-    const vector* r = rods_.cdata() + 1;
-    const scalar* m = solution_.cdata() + 1;
-
-    // Each rod's relative velocity once both its beads have their kicks
-    scalar largest = 0;
-    v[0] += m[0]*r[0] - m[-1]*r[-1];
-    for (label k = 0; k + 1 < n; ++k)
-    {
-        v[k + 1] += m[k + 1]*r[k + 1] - m[k]*r[k];
-        largest = max(largest, mag(r[k] & (v[k + 1] - v[k])));
-    }
-    if (type.ring())
-    {
-        largest = max(largest, mag(r[n - 1] & (v[0] - v[n - 1])));
-    }
-
-    return largest;
 }
 
 
@@ -285,7 +235,7 @@ Foam::label Foam::polymer::constraintModels::newton::iterate
     vector* x = chains.positions().data() + first;
 
     system_.resize(type.nRods());
-    padRods(rc, type, rods_);
+    rodVelocityProjection::padRods(rc, type, rods_);
 
     const label result = solveLengths(x, type, residual);
     if (result < 0)
@@ -358,42 +308,7 @@ bool Foam::polymer::constraintModels::newton::projectOnRods
     scalar& largest
 ) const
 {
-    const label n = type.nBeads();
-    const label nRods = type.nRods();
-
-    system_.resize(nRods);
-    padRods(x, type, rods_);
-
-    // r[k] is rod k, r[k - 1] and r[k + 1] its neighbours
-    const vector* r = rods_.cdata() + 1;
-    scalar* lower = system_.lower().data();
-    scalar* diagonal = system_.diagonal().data();
-    scalar* upper = system_.upper().data();
-    scalar* source = system_.source().data();
-
-    for (label k = 0; k < nRods; ++k)
-    {
-        const label j = (k + 1 < n) ? k + 1 : 0;
-        lower[k] = -(r[k] & r[k - 1]);
-        diagonal[k] = 2*(r[k] & r[k]);
-        upper[k] = -(r[k] & r[k + 1]);
-        source[k] = r[k] & (w[j] - w[k]);
-    }
-
-    // A failed solve leaves w, and has its residual measured
-    const bool solved = system_.solve(type.ring());
-    if (solved)
-    {
-        padSolution(type);
-    }
-    else
-    {
-        solution_.resize(nRods + 2);
-        solution_ = Zero;
-    }
-    largest = kick(w, type);
-
-    return solved;
+    return velocityProjection_.project(x, type, w, largest);
 }
 
 
