@@ -35,21 +35,26 @@ void Foam::polymer::rodVelocityProjection::padRods
 }
 
 
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::polymer::rodVelocityProjection::padSolution(const chainType& type)
+void Foam::polymer::rodVelocityProjection::padSolution
+(
+    const UList<scalar>& solution,
+    const chainType& type,
+    DynamicList<scalar>& padded
+)
 {
     const label nRods = type.nRods();
-    const UList<scalar>& solution = system_.source();
 
-    multipliers_.resize(nRods + 2);
+    padded.resize(nRods + 2);
     for (label k = 0; k < nRods; ++k)
     {
-        multipliers_[k + 1] = solution[k];
+        padded[k + 1] = solution[k];
     }
-    multipliers_[0] = type.ring() ? solution[nRods - 1] : 0;
-    multipliers_[nRods + 1] = type.ring() ? solution[0] : 0;
+    padded[0] = type.ring() ? solution[nRods - 1] : 0;
+    padded[nRods + 1] = type.ring() ? solution[0] : 0;
 }
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 
 Foam::scalar Foam::polymer::rodVelocityProjection::kick
@@ -118,7 +123,7 @@ bool Foam::polymer::rodVelocityProjection::project
     const bool solved = system_.solve(type.ring());
     if (solved)
     {
-        padSolution(type);
+        padSolution(system_.source(), type, multipliers_);
     }
     else
     {

@@ -82,7 +82,6 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     queue_(),
     snapshots_(),
     wall_(nullptr),
-    response_(),
     projection_(),
     changedBeads_()
 {}
@@ -221,6 +220,7 @@ void Foam::polymer::collisionModels::elasticRods::repredict
 void Foam::polymer::collisionModels::elasticRods::resolveWall
 (
     const event& e,
+    const polymerChains& chains,
     UList<vector>& velocitiesDagger
 )
 {
@@ -229,6 +229,18 @@ void Foam::polymer::collisionModels::elasticRods::resolveWall
     position_[bead] = positionAt(bead, e.from) + e.offset*velocity_[bead];
     beadTime_[bead] = e.time;
 
+    if
+    (
+        impulse_ == impulseType::constrained
+     && wall_->interaction(e.patch) == wallModel::interactionType::rebound
+     && reboundConstrained(e, chains, velocitiesDagger)
+    )
+    {
+        return;
+    }
+
+    changedBeads_.clear();
+    changedBeads_.append(bead);
     wall_->interact
     (
         bead,
@@ -240,20 +252,74 @@ void Foam::polymer::collisionModels::elasticRods::resolveWall
 }
 
 
-void Foam::polymer::collisionModels::elasticRods::addWeights
+bool Foam::polymer::collisionModels::elasticRods::chainResponse
 (
     const polymerChains& chains,
     const label chaini,
-    const label bead,
-    const scalar weight0,
-    const scalar weight1,
-    const vector& n
+    const UList<label>& beads,
+    const UList<scalar>& weights,
+    const vector& n,
+    const scalar t,
+    List<vector>& response
 )
 {
-    const label k = bead - chains.start(chaini);
-    const label k1 = (k + 1 < chains.size(chaini)) ? k + 1 : 0;
-    response_[k] += weight0*n;
-    response_[k1] += weight1*n;
+    const label first = chains.start(chaini);
+    response.setSize(chains.size(chaini));
+    response = Zero;
+    forAll(beads, k)
+    {
+        if (chains.chainOf(beads[k]) == chaini)
+        {
+            response[beads[k] - first] += weights[k]*n;
+        }
+    }
+
+    // The chain at t, where the impulse acts
+    for (label i = first; i < chains.end(chaini); ++i)
+    {
+        position_[i] = positionAt(i, t);
+        beadTime_[i] = t;
+    }
+
+    scalar largest;
+    if
+    (
+        !projection_.project
+        (
+            position_.cdata() + first, chains.type(chaini),
+            response.data(), largest
+        )
+    )
+    {
+        return false;
+    }
+    const scalar inverseMass = 1/chains.type(chaini).beadMass();
+    for (vector& r : response)
+    {
+        r *= inverseMass;
+    }
+    return true;
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::applyResponse
+(
+    const polymerChains& chains,
+    const label chaini,
+    const scalar J,
+    const UList<vector>& response,
+    UList<vector>& velocitiesDagger
+)
+{
+    const label first = chains.start(chaini);
+    for (label i = first; i < chains.end(chaini); ++i)
+    {
+        const vector dv = J*response[i - first];
+        velocity_[i] += dv;
+        velocitiesDagger[i] += dv;
+        queue_.changedCourse(i);
+        changedBeads_.append(i);
+    }
 }
 
 
@@ -280,101 +346,91 @@ bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
         return false;
     }
 
-    // The chains at the impact; each one's response to the unit impulse
-    // (J = 1) projected onto the motions that keep its rods, over m
+    // Each chain's response to the unit impulse J = 1 at the contact
+    const labelList fourBeads(beads);
+    const scalarList weights
+    ({
+        1 - lambdaI, lambdaI, lambdaJ - 1, -lambdaJ
+    });
     const label chainI = chains.chainOf(beads[0]);
     const label chainJ = chains.chainOf(beads[2]);
-    const label nChains = (chainI == chainJ) ? 1 : 2;
-    FixedList<label, 2> chainList({chainI, chainJ});
-    DynamicList<vector> responses;
-    for (label k = 0; k < nChains; ++k)
-    {
-        const label c = chainList[k];
-        const label first = chains.start(c);
-        for (label i = first; i < chains.end(c); ++i)
-        {
-            position_[i] = positionAt(i, e.time);
-            beadTime_[i] = e.time;
-        }
-
-        response_.resize(chains.size(c));
-        response_ = Zero;
-        if (c == chainI)
-        {
-            addWeights(chains, c, beads[0], 1 - lambdaI, lambdaI, n);
-        }
-        if (c == chainJ)
-        {
-            addWeights(chains, c, beads[2], lambdaJ - 1, -lambdaJ, n);
-        }
-        scalar largest;
-        if
+    List<vector> responseI, responseJ;
+    if
+    (
+        !chainResponse
         (
-            !projection_.project
+            chains, chainI, fourBeads, weights, n, e.time, responseI
+        )
+     || (
+            chainJ != chainI
+         && !chainResponse
             (
-                position_.cdata() + first, chains.type(c),
-                response_.data(), largest
+                chains, chainJ, fourBeads, weights, n, e.time, responseJ
             )
         )
-        {
-            return false;
-        }
-        const scalar inverseMass = 1/chains.type(c).beadMass();
-        for (const vector& r : response_)
-        {
-            responses.append(inverseMass*r);
-        }
+    )
+    {
+        return false;
     }
 
-    // The contact's relative normal velocity, and its change per unit J
-    auto contactVelocity = [&](const UList<vector>& u, const label offsetJ)
-    {
-        const label sI = chains.start(chainI);
-        const label sJ = chains.start(chainJ);
-        auto at = [&](const label bead, const label s0, const label offset)
-        {
-            return u[offset + bead - s0];
-        };
-        return
-        (
-            (1 - lambdaI)*at(beads[0], sI, 0) + lambdaI*at(beads[1], sI, 0)
-          - (1 - lambdaJ)*at(beads[2], sJ, offsetJ)
-          - lambdaJ*at(beads[3], sJ, offsetJ)
-        ) & n;
-    };
-    const label offsetJ = (nChains == 2) ? chains.size(chainI) : 0;
-    const scalar response = contactVelocity(responses, offsetJ);
-    FixedList<vector, 4> v4;
+    // The contact's relative normal velocity u and its change per unit J
+    scalar u = 0, response = 0;
     for (label k = 0; k < 4; ++k)
     {
-        v4[k] = velocity_[beads[k]];
+        const label c = (k < 2) ? chainI : chainJ;
+        const List<vector>& r = (c == chainI) ? responseI : responseJ;
+        u += weights[k]*(velocity_[beads[k]] & n);
+        response += weights[k]*(r[beads[k] - chains.start(c)] & n);
     }
-    const scalar u =
-        (
-            (1 - lambdaI)*v4[0] + lambdaI*v4[1]
-          - (1 - lambdaJ)*v4[2] - lambdaJ*v4[3]
-        ) & n;
     if (response <= 0)
     {
         return false;
     }
-    const scalar J = -2*u/response;
 
+    const scalar J = -2*u/response;
     changedBeads_.clear();
-    label offset = 0;
-    for (label k = 0; k < nChains; ++k)
+    applyResponse(chains, chainI, J, responseI, velocitiesDagger);
+    if (chainJ != chainI)
     {
-        const label c = chainList[k];
-        for (label i = chains.start(c); i < chains.end(c); ++i)
-        {
-            const vector dv = J*responses[offset + i - chains.start(c)];
-            velocity_[i] += dv;
-            velocitiesDagger[i] += dv;
-            queue_.changedCourse(i);
-            changedBeads_.append(i);
-        }
-        offset += chains.size(c);
+        applyResponse(chains, chainJ, J, responseJ, velocitiesDagger);
     }
+    return true;
+}
+
+
+bool Foam::polymer::collisionModels::elasticRods::reboundConstrained
+(
+    const event& e,
+    const polymerChains& chains,
+    UList<vector>& velocitiesDagger
+)
+{
+    const label bead = -1 - e.pair;
+    const scalar u = velocity_[bead] & e.normal;
+    const label c = chains.chainOf(bead);
+    List<vector> response;
+    if
+    (
+        u >= 0
+     || !chainResponse
+        (
+            chains, c, labelList({bead}), scalarList({1.0}), e.normal,
+            e.time, response
+        )
+    )
+    {
+        return false;
+    }
+
+    // The bead's normal velocity reverses: J = -2u/(its response per unit)
+    const scalar perUnit = response[bead - chains.start(c)] & e.normal;
+    if (perUnit <= 0)
+    {
+        return false;
+    }
+    changedBeads_.clear();
+    applyResponse(chains, c, -2*u/perUnit, response, velocitiesDagger);
+    wall_->countRebound();
     return true;
 }
 
@@ -604,8 +660,11 @@ void Foam::polymer::collisionModels::elasticRods::correct
         if (wallEvent)
         {
             ++nWallEvents;
-            resolveWall(e, vDagger);
-            repredict(-1 - e.pair, now, deltaT);
+            resolveWall(e, chains, vDagger);
+            for (const label bead : changedBeads_)
+            {
+                repredict(bead, now, deltaT);
+            }
             continue;
         }
 

@@ -75,25 +75,6 @@ Foam::polymer::constraintModels::newton::newton
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void
-Foam::polymer::constraintModels::newton::padSolution
-(
-    const chainType& type
-) const
-{
-    const label nRods = type.nRods();
-    const UList<scalar>& solution = system_.source();
-
-    solution_.resize(nRods + 2);
-    for (label k = 0; k < nRods; ++k)
-    {
-        solution_[k + 1] = solution[k];
-    }
-    solution_[0] = type.ring() ? solution[nRods - 1] : 0;
-    solution_[nRods + 1] = type.ring() ? solution[0] : 0;
-}
-
-
 Foam::scalar Foam::polymer::constraintModels::newton::linearise
 (
     const vector* x,
@@ -162,7 +143,7 @@ Foam::scalar Foam::polymer::constraintModels::newton::lineSearch
 {
     // The system is rebuilt at once: its residual tests the step, and in
     // the usual case (a full step) it is the next iteration's system
-    padSolution(type);
+    rodVelocityProjection::padSolution(system_.source(), type, solution_);
 
     scalar alpha = 1;
     shift(x, type, alpha);
