@@ -29,7 +29,10 @@ namespace
 //- A straight chain of three beads along x from start, of the given id
 void appendChain(polymerChains& chains, const label id, const point& start)
 {
-    const List<vector> x({start, start + vector(1, 0, 0), start + vector(2, 0, 0)});
+    const List<vector> x
+    ({
+        start, start + vector(1, 0, 0), start + vector(2, 0, 0)
+    });
     chains.append(0, id, x, List<vector>(3, vector(id, 0, 0)));
 }
 
@@ -54,7 +57,8 @@ TEST(chainDistribution, wrapCarriesWholeChainsByThePeriod)
 
     EXPECT_EQ(distribution.nWrapped(), 2);
     const List<vector>& x = chains.positions();
-    const vector shifts[] = {vector(0, 0, 0), vector(-4, 0, 0), vector(4, -4, 0)};
+    const vector shifts[] =
+        {vector(0, 0, 0), vector(-4, 0, 0), vector(4, -4, 0)};
     const point starts[] =
         {point(2.5, 1.5, 1.5), point(3.5, 1.5, 1.5), point(-2.5, 4.5, 1.5)};
     for (label c = 0; c < 3; ++c)

@@ -197,6 +197,33 @@ TEST(rodCollision, ParallelRodsArePushedApart)
         EXPECT_NEAR(normalVelocity(after), -normalVelocity(v), 1e-14);
     }
 
+    // Nearly parallel rods crossing through their common plane (rod J
+    // turned by 1e-7 in the x-y plane, its lines' intersection undefined
+    // to the detector's tolerance, sinking through rod I's plane): pushed
+    // apart along the plane's normal, not along their in-plane offset
+    {
+        const scalar angle = 1e-7;
+        const vector dirJ(std::cos(angle), std::sin(angle), 0);
+        const rodPairCrossing nearly
+        (
+            vector(0, 0, 0), vector(1, 0, 0),
+            vector(0.5, 1e-9, 0), vector(0.5, 1e-9, 0) + dirJ,
+            Zero, Zero, vector(0, 0, -1), vector(0, 0, -1)
+        );
+        scalar li, lj;
+        vector n;
+        ASSERT_FALSE(nearly.intersection(0, li, lj));
+        ASSERT_TRUE(nearly.contact(0, li, lj, n));
+        EXPECT_NEAR(mag(n ^ vector(0, 0, 1)), 0, 1e-9);
+        FixedList<vector, 4> after;
+        ASSERT_TRUE(nearly.elasticImpulse(0, after));
+        // The contacts' relative velocity along n, n.z() before, reverses
+        const scalar uAfter =
+            (((1 - li)*after[0] + li*after[1])
+          - ((1 - lj)*after[2] + lj*after[3])) & n;
+        EXPECT_NEAR(uAfter, -n.z(), 1e-12);
+    }
+
     // No overlap along the rods: no contact
     const rodPairCrossing apart
     (

@@ -172,7 +172,7 @@ void Foam::polymer::chainStepper::subStepChain
         for (label s = 0; s < nSub && converged; ++s)
         {
             // The fluid velocity stays that at x^n; each sub-step has its
-            // own noise, keyed by (nSub, s) below the step's own key
+            // own noise, keyed by (nSub, s) under the step's own key
             subStepStart = x;
             const List<vector> vSubStart(v);
             integration_.integrateChain
@@ -357,6 +357,11 @@ void Foam::polymer::chainStepper::undoCrossingReprojections
     const scalar time
 )
 {
+    if (!projected.found(true))
+    {
+        return;
+    }
+
     rods_.update(chains_);
     const rodCrossingAudit audit(rods_.rods());
 

@@ -291,7 +291,8 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
             stepper_->velocityChange(),
             stepper_->force(),
             deltaT,
-            !firstCycle
+            !firstCycle,
+            mesh_.time().deltaTValue()
         );
     }
 
@@ -393,6 +394,8 @@ void Foam::polymer::polymerCloud::predictCoupling()
         chains_,
         stepper_->velocityChange(),
         stepper_->force(),
+        deltaT,
+        false,
         deltaT
     );
 

@@ -294,6 +294,23 @@ void Foam::polymer::polymerCloud::selectModels(const dictionary& subModels)
             << exit(FatalIOError);
     }
 
+    // The predictor takes the flow step as one polymer step, with the
+    // noise of a whole step: not the sub-cycles' step it predicts
+    if
+    (
+        coupling_->predictorCorrector()
+     && solution_.maxNeighbourDisplacement() > 0
+    )
+    {
+        FatalIOErrorInFunction(properties_)
+            << "solution maxNeighbourDisplacement in " << properties_.name()
+            << " sub-cycles the polymer step, while the field flow's"
+            << " predictorCorrector is true" << nl
+            << "    expected: one of them (the predictor-corrector coupling"
+            << " predicts a whole flow step as one polymer step)"
+            << exit(FatalIOError);
+    }
+
     checkParallelSupport(subModels);
 }
 

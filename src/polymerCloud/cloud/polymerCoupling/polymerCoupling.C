@@ -203,7 +203,8 @@ void Foam::polymer::polymerCoupling::deposit
     const UList<vector>& velocityChange,
     const UList<vector>& force,
     const scalar deltaT,
-    const bool accumulate
+    const bool accumulate,
+    const scalar flowDeltaT
 )
 {
     if (!accumulate)
@@ -231,8 +232,12 @@ void Foam::polymer::polymerCoupling::deposit
     {
         const chainType& type = chains.type(c);
         const scalar m = type.beadMass();
+        // The semi-implicit part is the flow step's sensitivity to the
+        // fluid velocity, held over the step: once, over the flow step
         const scalar coeff =
-            semiImplicit_ ? -m*std::expm1(-deltaT/type.inertialTime()) : 0;
+            (semiImplicit_ && !accumulate)
+          ? -m*std::expm1(-flowDeltaT/type.inertialTime())
+          : 0;
 
         for (label i = chains.start(c); i < chains.end(c); ++i)
         {

@@ -109,12 +109,12 @@ Foam::polymer::cloudFunctions::polymerStress::polymerStress
     (
         checkedInput::labelAtLeastOrDefault
         (
-            dict, "interval", 100, 1, "<steps between lines>"
+            dict, "interval", 100, 1, "<flow steps between lines>"
         )
     ),
+    flowSteps_(0),
     sum_(Zero),
     nSteps_(0),
-    flowSteps_(0),
     blockSum_(Zero),
     blockN_(0),
     blockMeansXY_(),
@@ -239,7 +239,12 @@ void Foam::polymer::cloudFunctions::polymerStress::postEvolve()
 {
     // Lines every interval flow steps; the average is over the polymer
     // steps (more than the flow steps where the cloud sub-cycles)
-    if (!nSteps_ || ++flowSteps_ % interval_ || !Pstream::master())
+    if (!nSteps_)
+    {
+        return;
+    }
+    ++flowSteps_;
+    if (flowSteps_ % interval_ || !Pstream::master())
     {
         return;
     }

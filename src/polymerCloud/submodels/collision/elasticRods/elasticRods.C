@@ -83,7 +83,8 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     snapshots_(),
     wall_(nullptr),
     projection_(),
-    changedBeads_()
+    changedBeads_(),
+    frozenChains_()
 {}
 
 
@@ -239,6 +240,12 @@ void Foam::polymer::collisionModels::elasticRods::resolveWall
         return;
     }
 
+    // A bead that escapes, sticks or is rejected stops: its chain takes
+    // no impulse through its rods for the rest of the step
+    if (wall_->interaction(e.patch) != wallModel::interactionType::rebound)
+    {
+        frozenChains_.append(chains.chainOf(bead));
+    }
     changedBeads_.clear();
     changedBeads_.append(bead);
     wall_->interact
@@ -354,6 +361,10 @@ bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
     });
     const label chainI = chains.chainOf(beads[0]);
     const label chainJ = chains.chainOf(beads[2]);
+    if (frozenChains_.found(chainI) || frozenChains_.found(chainJ))
+    {
+        return false;
+    }
     List<vector> responseI, responseJ;
     if
     (
@@ -374,20 +385,23 @@ bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
     }
 
     // The contact's relative normal velocity u and its change per unit J
-    scalar u = 0, response = 0;
+    // (at most the free beads' sum w^2/m; a contact the chains' rods all
+    // but lock, as within a short ring, takes the dumbbell impulse)
+    scalar u = 0, contactResponse = 0, freeResponse = 0;
     for (label k = 0; k < 4; ++k)
     {
         const label c = (k < 2) ? chainI : chainJ;
         const List<vector>& r = (c == chainI) ? responseI : responseJ;
         u += weights[k]*(velocity_[beads[k]] & n);
-        response += weights[k]*(r[beads[k] - chains.start(c)] & n);
+        contactResponse += weights[k]*(r[beads[k] - chains.start(c)] & n);
+        freeResponse += sqr(weights[k])/chains.type(c).beadMass();
     }
-    if (response <= 0)
+    if (contactResponse <= 1e-8*freeResponse)
     {
         return false;
     }
 
-    const scalar J = -2*u/response;
+    const scalar J = -2*u/contactResponse;
     changedBeads_.clear();
     applyResponse(chains, chainI, J, responseI, velocitiesDagger);
     if (chainJ != chainI)
@@ -412,6 +426,7 @@ bool Foam::polymer::collisionModels::elasticRods::reboundConstrained
     if
     (
         u >= 0
+     || frozenChains_.found(c)
      || !chainResponse
         (
             chains, c, labelList({bead}), scalarList({1.0}), e.normal,
@@ -424,7 +439,7 @@ bool Foam::polymer::collisionModels::elasticRods::reboundConstrained
 
     // The bead's normal velocity reverses: J = -2u/(its response per unit)
     const scalar perUnit = response[bead - chains.start(c)] & e.normal;
-    if (perUnit <= 0)
+    if (perUnit <= 1e-8/chains.type(c).beadMass())
     {
         return false;
     }
@@ -583,6 +598,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
 )
 {
     wall_ = (wall && wall->active()) ? wall : nullptr;
+    frozenChains_.clear();
 
     const label nBeads = chains.nBeads();
     List<vector>& x = chains.positions();

@@ -140,10 +140,18 @@ bool Foam::polymer::rodPairCrossing::parallelContact
     lambdaJ = min(max(((contactI - xj) & c)/cc, scalar(0)), scalar(1));
     const vector contactJ = xj + lambdaJ*c;
 
-    // Normal to rod I: along the rods' separation, or, where they touch,
-    // along the contact points' relative velocity
+    // The rods' plane, where it is defined to round-off: a crossing the
+    // detector found in nearly parallel rods is through that plane.
+    // Otherwise normal to rod I: along the rods' separation, or, where
+    // they touch, along the contact points' relative velocity
+    vector normal = b ^ c;
+    if (magSqr(normal) > sqr(1e-12)*bb*cc)
+    {
+        n = normal/mag(normal);
+        return true;
+    }
     const vector along = b/std::sqrt(bb);
-    vector normal = contactI - contactJ;
+    normal = contactI - contactJ;
     normal -= (normal & along)*along;
     if (magSqr(normal) <= SMALL*bb)
     {
