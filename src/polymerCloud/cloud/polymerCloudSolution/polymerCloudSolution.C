@@ -81,10 +81,11 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
     ),
     contactTreatment_
     (
-        contactTreatmentNames.getOrDefault
+        checkedInput::enumOrDefault
         (
-            "contactTreatment",
             properties.optionalSubDict("solution"),
+            "contactTreatment",
+            contactTreatmentNames,
             contactTreatmentType::hierarchical
         )
     )

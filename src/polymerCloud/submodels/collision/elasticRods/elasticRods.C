@@ -69,9 +69,9 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     audit_(coeffDict_.getOrDefault<bool>("audit", false)),
     impulse_
     (
-        impulseTypeNames.getOrDefault
+        checkedInput::enumOrDefault
         (
-            "impulse", coeffDict_, impulseType::dumbbell
+            coeffDict_, "impulse", impulseTypeNames, impulseType::dumbbell
         )
     ),
     rods_(),
