@@ -114,6 +114,26 @@ struct pairPiece
         return 1e-10L*b*c*(b + c);
     }
 
+    //- Is V within the tolerance all over [t0, t1]? (sampled at five
+    //  points: the intervals asked about are those between a root and a
+    //  contact, short on the cubic's scale)
+    bool withinRoundOff
+    (
+        const real t0,
+        const real t1,
+        const real tolerance
+    ) const
+    {
+        for (int k = 0; k <= 4; ++k)
+        {
+            if (std::abs(value(t0 + (t1 - t0)*k/4)) > tolerance)
+            {
+                return false;
+            }
+        }
+        return true;
+    }
+
     //- Sign changes of V in (0, 1), in order: (fraction, sign after)
     void roots(Foam::DynamicList<std::pair<real, int>>& found) const;
 };
@@ -225,12 +245,17 @@ void Foam::polymer::rodCrossingAudit::checkPair
         real contact = -1;
         for (const std::pair<real, int>& root : roots)
         {
-            // A root at a contact at either end is round-off about zero:
-            // the sign is followed across the contact instead
+            // A root at a contact at either end, V within round-off of
+            // zero all the way from the root to that end, is round-off
+            // about zero: the sign is followed across the contact instead.
+            // (The root's distance from the end as a fraction of the piece
+            // says nothing of this: two events can be 1e-7 of a step
+            // apart, and a root 1e-8 of that piece before its end is still
+            // a contact.)
             if
             (
-                (root.first < 1e-9L && std::abs(start) <= tolerance)
-             || (root.first > 1 - 1e-9L && std::abs(end) <= tolerance)
+                piece.withinRoundOff(0, root.first, tolerance)
+             || piece.withinRoundOff(root.first, 1, tolerance)
             )
             {
                 contact = root.first;
