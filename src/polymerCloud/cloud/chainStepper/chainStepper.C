@@ -12,7 +12,6 @@ License
 
 #include "chainStepper.H"
 #include "Time.H"
-#include "rodCrossingAudit.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -51,12 +50,8 @@ Foam::polymer::chainStepper::chainStepper
     subCycleSteps_(0),
     largestSubCycles_(1),
     cappedSteps_(0),
-    reproject_(solution.reproject()),
-    reprojected_(0),
-    reprojectionFailures_(0),
-    reprojectionsUndone_(0),
-    reprojectionCrossings_(0),
-    rods_()
+    maxBeadsOutside_(0),
+    beadStepsOutside_(0)
 {}
 
 
@@ -258,160 +253,6 @@ Foam::scalar Foam::polymer::chainStepper::driftDifference(const label c) const
 }
 
 
-bool Foam::polymer::chainStepper::reprojectChain
-(
-    const label c,
-    const UList<vector>& directions,
-    const scalar deltaT,
-    const scalar time
-)
-{
-    // The length projection adds its correction over deltaT to the
-    // velocities, as a constraint force over the step would; here it
-    // corrects positions the impulses left, so the velocities stay
-    SubList<vector> v(chains_.velocities(), chains_.size(c), chains_.start(c));
-    const List<vector> velocities(v);
-
-    scalar residual = 0;
-    const label iter = constraint_.correctChainLengths
-    (
-        chains_, c, directions, deltaT, residual
-    );
-    v = velocities;
-    if (iter < 0)
-    {
-        if (!reprojectionFailures_)
-        {
-            WarningInFunction
-                << "The re-projection of chain " << chains_.globalId(c)
-                << " after its contacts at time " << time
-                << " did not converge (residual " << residual
-                << "): its rods stay as the contacts left them; such"
-                << " chains are counted in the final report (constraint"
-                << " exactRods always converges)" << endl;
-        }
-        ++reprojectionFailures_;
-        return false;
-    }
-    constraint_.correctChainVelocities(chains_, c, residual);
-    return true;
-}
-
-
-void Foam::polymer::chainStepper::restoreChain
-(
-    const label c,
-    const List<point>& positionsBefore,
-    const List<vector>& velocitiesBefore
-)
-{
-    for (label i = chains_.start(c); i < chains_.end(c); ++i)
-    {
-        chains_.positions()[i] = positionsBefore[i];
-        chains_.velocities()[i] = velocitiesBefore[i];
-    }
-}
-
-
-void Foam::polymer::chainStepper::undoWallReprojections
-(
-    const wallModel& wall,
-    const List<point>& positionsBefore,
-    const List<vector>& velocitiesBefore,
-    boolList& projected
-)
-{
-    const List<vector>& x = chains_.positions();
-    wallModel::impact hit;
-    forAll(projected, c)
-    {
-        if (!projected[c])
-        {
-            continue;
-        }
-        for (label i = chains_.start(c); i < chains_.end(c); ++i)
-        {
-            if
-            (
-                wall.predict
-                (
-                    positionsBefore[i], x[i] - positionsBefore[i], 1, hit
-                )
-            )
-            {
-                restoreChain(c, positionsBefore, velocitiesBefore);
-                projected[c] = false;
-                ++reprojectionsUndone_;
-                break;
-            }
-        }
-    }
-}
-
-
-void Foam::polymer::chainStepper::undoCrossingReprojections
-(
-    const List<point>& positionsBefore,
-    const List<vector>& velocitiesBefore,
-    boolList& projected,
-    const scalar time
-)
-{
-    if (!projected.found(true))
-    {
-        return;
-    }
-
-    rods_.update(chains_);
-    const rodCrossingAudit audit(rods_.rods());
-
-    // Each pass undoes at least one chain's re-projection, or stops
-    for (label pass = 0; pass <= chains_.nChains(); ++pass)
-    {
-        const List<List<point>> path
-        ({
-            positionsBefore, List<point>(chains_.positions())
-        });
-        const List<rodCrossingAudit::crossing> found = audit.check(path);
-        if (found.empty())
-        {
-            return;
-        }
-
-        label nUndone = 0;
-        for (const rodCrossingAudit::crossing& crossing : found)
-        {
-            for (const labelPair& rod : {crossing.rodA, crossing.rodB})
-            {
-                const label c = chains_.chainOf(rod.first());
-                if (!projected[c])
-                {
-                    continue;
-                }
-                restoreChain(c, positionsBefore, velocitiesBefore);
-                projected[c] = false;
-                ++nUndone;
-            }
-        }
-        reprojectionsUndone_ += nUndone;
-
-        if (!nUndone)
-        {
-            // Only chains that did not move: not the re-projection's
-            for (const rodCrossingAudit::crossing& crossing : found)
-            {
-                WarningInFunction
-                    << "Audit: rods (beads " << crossing.rodA << ") and ("
-                    << crossing.rodB << ") cross at time " << time
-                    << " on paths the re-projection did not move" << endl;
-            }
-            reprojectionCrossings_ += found.size();
-            return;
-        }
-    }
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::label Foam::polymer::chainStepper::subCycles(const scalar deltaT)
@@ -504,85 +345,6 @@ void Foam::polymer::chainStepper::writeSubCycleReport(Ostream& os) const
 }
 
 
-void Foam::polymer::chainStepper::reprojectAfterContacts
-(
-    const scalar deltaT,
-    const scalar time,
-    const wallModel* wall
-)
-{
-    const scalar tolerance = constraint_.lengthTolerance();
-    if (!reproject_ || tolerance >= GREAT)
-    {
-        return;
-    }
-
-    boolList projected(chains_.nChains(), false);
-    label nOff = 0;
-    for (label c = 0; c < chains_.nChains(); ++c)
-    {
-        if (chains_.maxRodLengthError(c) > tolerance)
-        {
-            projected[c] = true;
-            ++nOff;
-        }
-    }
-    if (!nOff)
-    {
-        return;
-    }
-
-    // The projection's directions: the rods as the contacts left them
-    const List<point> positionsBefore(chains_.positions());
-    const List<vector> velocitiesBefore(chains_.velocities());
-    forAll(projected, c)
-    {
-        if
-        (
-            projected[c]
-         && !reprojectChain(c, positionsBefore, deltaT, time)
-        )
-        {
-            // As the contacts left it
-            restoreChain(c, positionsBefore, velocitiesBefore);
-            projected[c] = false;
-        }
-    }
-    reprojected_ += nOff;
-
-    if (wall && wall->active())
-    {
-        undoWallReprojections
-        (
-            *wall, positionsBefore, velocitiesBefore, projected
-        );
-    }
-    undoCrossingReprojections
-    (
-        positionsBefore, velocitiesBefore, projected, time
-    );
-}
-
-
-void Foam::polymer::chainStepper::writeReprojectionReport(Ostream& os) const
-{
-    if (!reproject_)
-    {
-        return;
-    }
-
-    os  << "    re-projection after contacts: chain-steps "
-        << returnReduce(scalar(reprojected_), sumOp<scalar>())
-        << ", not converged "
-        << returnReduce(scalar(reprojectionFailures_), sumOp<scalar>())
-        << ", undone because their paths crossed a wall or a rod "
-        << returnReduce(scalar(reprojectionsUndone_), sumOp<scalar>())
-        << ", crossings left "
-        << returnReduce(scalar(reprojectionCrossings_), sumOp<scalar>())
-        << nl;
-}
-
-
 void Foam::polymer::chainStepper::start()
 {
     positionsOld_ = chains_.positions();
@@ -615,6 +377,13 @@ void Foam::polymer::chainStepper::updateDrift()
             drift_[i] += mobility*force_[i];
         }
     }
+}
+
+
+void Foam::polymer::chainStepper::countBeadsOutside()
+{
+    maxBeadsOutside_ = max(maxBeadsOutside_, flow_.nBeadsOutside());
+    beadStepsOutside_ += flow_.nBeadsOutside();
 }
 
 

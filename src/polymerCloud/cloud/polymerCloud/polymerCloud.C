@@ -183,9 +183,7 @@ Foam::polymer::polymerCloud::polymerCloud
     nInjected_(0),
     functions_(),
     evolveSeconds_(0),
-    beadSteps_(0),
-    maxBeadsOutside_(0),
-    beadStepsOutside_(0)
+    beadSteps_(0)
 {
     // Keep the file's name for messages when given a dictionary read from it
     if (!properties.name().empty())
@@ -307,7 +305,17 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
     (
         chains_, stepper_->positionsOld(), deltaT, time, wall_.get()
     );
-    stepper_->reprojectAfterContacts(deltaT, time, wall_.get());
+    if (contactProjection_)
+    {
+        contactProjection_->correct
+        (
+            stepper_->positionsOld(),
+            stepper_->velocitiesOld(),
+            deltaT,
+            time,
+            wall_.get()
+        );
+    }
     collisionGroups_->checkBoxes();
     rejectChains();
     removeEscapedChains();
@@ -324,8 +332,7 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
 void Foam::polymer::polymerCloud::updateDrift()
 {
     stepper_->updateDrift();
-    maxBeadsOutside_ = max(maxBeadsOutside_, flow_->nBeadsOutside());
-    beadStepsOutside_ += flow_->nBeadsOutside();
+    stepper_->countBeadsOutside();
 }
 
 

@@ -116,7 +116,10 @@ void Foam::polymer::polymerCloud::writeReport(Ostream& os) const
         model.writeReport(os);
     }
     stepper_->writeSubCycleReport(os);
-    stepper_->writeReprojectionReport(os);
+    if (contactProjection_)
+    {
+        contactProjection_->writeReport(os);
+    }
     os
         << "    chains injected " << returnReduce(nInjected_, sumOp<label>())
         << ", chains carried across cyclic patches "
@@ -141,8 +144,8 @@ void Foam::polymer::polymerCloud::writeReport(Ostream& os) const
     os
         << "    beads " << nParcels() << ", outside the mesh "
         << nBeadsOutside() << " (checked every step: at most "
-        << returnReduce(maxBeadsOutside_, maxOp<label>()) << " in a step, "
-        << returnReduce(beadStepsOutside_, sumOp<scalar>())
+        << returnReduce(stepper_->maxBeadsOutside(), maxOp<label>()) << " in a step, "
+        << returnReduce(stepper_->beadStepsOutside(), sumOp<scalar>())
         << " bead-steps in all)" << nl;
 }
 

@@ -261,6 +261,16 @@ void Foam::polymer::polymerCloud::selectModels(const dictionary& subModels)
             constraint_()
         )
     );
+    if (solution_.reproject())
+    {
+        contactProjection_.reset
+        (
+            new contactProjection
+            (
+                chains_, constraint_(), collision_->uncrossable()
+            )
+        );
+    }
     distribution_.reset
     (
         new chainDistribution

@@ -86,7 +86,7 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
             properties.optionalSubDict("solution"),
             "contactTreatment",
             contactTreatmentNames,
-            contactTreatmentType::hierarchical
+            contactTreatmentType::reproject
         )
     )
 {}

@@ -138,7 +138,7 @@ void Foam::polymer::cloudFunctions::chainStatistics::writeLine()
     scalar twiceKinetic = twiceKinetic_;
     scalar dof = 0;
     scalar dofKT = 0;
-    scalar rodError = 0;
+    scalar rodError = largestRodError_;
 
     for (label c = 0; c < chains.nChains(); ++c)
     {
@@ -198,6 +198,7 @@ void Foam::polymer::cloudFunctions::chainStatistics::writeLine()
     }
 
     cloud_.resetIntervalCounters();
+    largestRodError_ = 0;
 }
 
 
@@ -220,6 +221,7 @@ Foam::polymer::cloudFunctions::chainStatistics::chainStatistics
     ),
     stepsSinceLine_(0),
     twiceKinetic_(0),
+    largestRodError_(0),
     file_()
 {
     if (Pstream::master())
@@ -259,6 +261,14 @@ void Foam::polymer::cloudFunctions::chainStatistics::postConstrain
 
 void Foam::polymer::cloudFunctions::chainStatistics::postEvolve()
 {
+    // Every step's end, not only the lines': a rod off for a few steps
+    // between lines is still reported
+    const polymerChains& chains = cloud_.chains();
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        largestRodError_ = max(largestRodError_, chains.maxRodLengthError(c));
+    }
+
     if (++stepsSinceLine_ >= interval_)
     {
         stepsSinceLine_ = 0;

@@ -1,0 +1,311 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "contactProjection.H"
+#include "rodCrossingAudit.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::polymer::contactProjection::contactProjection
+(
+    polymerChains& chains,
+    const constraintModel& constraint,
+    const bool uncrossable
+)
+:
+    chains_(chains),
+    constraint_(constraint),
+    uncrossable_(uncrossable),
+    rods_(),
+    zones_(),
+    reprojected_(0),
+    notConverged_(0),
+    zoneChainSteps_(0),
+    heldChainSteps_(0),
+    leftOff_(0),
+    zonesFormed_(0),
+    energyRemoved_(0),
+    crossingsLeft_(0)
+{}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::polymer::contactProjection::reprojectChain
+(
+    const label c,
+    const UList<point>& directions,
+    const scalar deltaT,
+    const scalar time
+)
+{
+    // The length projection adds its correction over deltaT to the
+    // velocities, as a constraint force over the step would; here it
+    // corrects positions the impulses left, so the velocities stay
+    SubList<vector> v(chains_.velocities(), chains_.size(c), chains_.start(c));
+    const List<vector> velocities(v);
+
+    scalar residual = 0;
+    const label iter = constraint_.correctChainLengths
+    (
+        chains_, c, directions, deltaT, residual
+    );
+    v = velocities;
+    if (iter < 0)
+    {
+        if (!notConverged_)
+        {
+            WarningInFunction
+                << "The re-projection of chain " << chains_.globalId(c)
+                << " after its contacts at time " << time
+                << " did not converge (residual " << residual
+                << "): it moves in a rigid impact zone instead; such"
+                << " chains are counted in the final report (constraint"
+                << " exactRods always converges)" << endl;
+        }
+        ++notConverged_;
+        return false;
+    }
+    constraint_.correctChainVelocities(chains_, c, residual);
+    return true;
+}
+
+
+bool Foam::polymer::contactProjection::meetsWall
+(
+    const wallModel& wall,
+    const label c,
+    const UList<point>& positionsAfter
+) const
+{
+    const List<point>& x = chains_.positions();
+    wallModel::impact hit;
+    for (label i = chains_.start(c); i < chains_.end(c); ++i)
+    {
+        if (wall.predict(positionsAfter[i], x[i] - positionsAfter[i], 1, hit))
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+bool Foam::polymer::contactProjection::checkPaths
+(
+    const rodCrossingAudit& audit,
+    const wallModel* wall,
+    const boolList& moved,
+    const UList<point>& positionsAfter,
+    const scalar time
+)
+{
+    // Walls first: a projected chain whose path meets one becomes a zone,
+    // a zone whose rigid path meets one is held at the step's start (where
+    // its beads were in the fluid)
+    bool changed = false;
+    if (wall && wall->active())
+    {
+        forAll(moved, c)
+        {
+            const bool inZone = zones_.inZone(c);
+            if
+            (
+                (moved[c] || inZone)
+             && !(inZone && zones_.held(c))
+             && meetsWall(*wall, c, positionsAfter)
+            )
+            {
+                inZone ? zones_.hold(c) : zones_.add(c);
+                changed = true;
+            }
+        }
+    }
+    if (changed)
+    {
+        return true;
+    }
+
+    if (!uncrossable_)
+    {
+        return false;
+    }
+
+    // Rods that would cross join one zone; a zone's own rods cannot cross,
+    // since it moves rigidly from the step's start
+    const List<rodCrossingAudit::crossing> found =
+        audit.check(positionsAfter, chains_.positions());
+    for (const rodCrossingAudit::crossing& crossing : found)
+    {
+        const label a = chains_.chainOf(crossing.rodA.first());
+        const label b = chains_.chainOf(crossing.rodB.first());
+        if (zones_.sameZone(a, b))
+        {
+            continue;
+        }
+        if (!moved[a] && !moved[b] && !zones_.inZone(a) && !zones_.inZone(b))
+        {
+            WarningInFunction
+                << "Audit: rods (beads " << crossing.rodA << ") and ("
+                << crossing.rodB << ") cross at time " << time
+                << " on paths the re-projection did not move" << endl;
+            ++crossingsLeft_;
+            continue;
+        }
+        zones_.merge(a, b);
+        changed = true;
+    }
+    return changed;
+}
+
+
+void Foam::polymer::contactProjection::restoreZones
+(
+    const UList<point>& positionsAfter,
+    const UList<vector>& velocitiesAfter
+)
+{
+    for (const labelList& zone : zones_.zones())
+    {
+        for (const label c : zone)
+        {
+            for (label i = chains_.start(c); i < chains_.end(c); ++i)
+            {
+                chains_.positions()[i] = positionsAfter[i];
+                chains_.velocities()[i] = velocitiesAfter[i];
+            }
+            ++leftOff_;
+        }
+    }
+}
+
+
+void Foam::polymer::contactProjection::countZones
+(
+    const UList<vector>& velocitiesAfter
+)
+{
+    const List<vector>& v = chains_.velocities();
+    for (const labelList& zone : zones_.zones())
+    {
+        ++zonesFormed_;
+        const bool held = zones_.held(zone.first());
+        for (const label c : zone)
+        {
+            ++zoneChainSteps_;
+            heldChainSteps_ += held;
+            const scalar m = chains_.type(c).beadMass();
+            for (label i = chains_.start(c); i < chains_.end(c); ++i)
+            {
+                energyRemoved_ +=
+                    0.5*m*(magSqr(velocitiesAfter[i]) - magSqr(v[i]));
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::polymer::contactProjection::correct
+(
+    const UList<point>& positionsStart,
+    const UList<vector>& velocitiesStart,
+    const scalar deltaT,
+    const scalar time,
+    const wallModel* wall
+)
+{
+    const scalar tolerance = constraint_.lengthTolerance();
+    if (tolerance >= GREAT)
+    {
+        return;
+    }
+
+    boolList moved(chains_.nChains(), false);
+    label nOff = 0;
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        if (chains_.maxRodLengthError(c) > tolerance)
+        {
+            moved[c] = true;
+            ++nOff;
+        }
+    }
+    if (!nOff)
+    {
+        return;
+    }
+    reprojected_ += nOff;
+
+    // The contacts' state; the projection's directions are its rods
+    const List<point> positionsAfter(chains_.positions());
+    const List<vector> velocitiesAfter(chains_.velocities());
+    zones_.reset(chains_.nChains());
+    forAll(moved, c)
+    {
+        if (moved[c] && !reprojectChain(c, positionsAfter, deltaT, time))
+        {
+            zones_.add(c);
+        }
+    }
+
+    rods_.update(chains_);
+    const rodCrossingAudit audit(rods_.rods());
+    const label maxPasses = 3*chains_.nChains() + 2;
+    for (label pass = 0; pass < maxPasses; ++pass)
+    {
+        zones_.placeAll
+        (
+            chains_,
+            positionsStart,
+            velocitiesStart,
+            positionsAfter,
+            velocitiesAfter
+        );
+        if (!checkPaths(audit, wall, moved, positionsAfter, time))
+        {
+            countZones(velocitiesAfter);
+            return;
+        }
+    }
+
+    WarningInFunction
+        << "The rigid impact zones at time " << time << " did not settle in "
+        << maxPasses << " passes: " << zones_.nChainsInZones()
+        << " chains stay as the contacts left them (rods off)" << endl;
+    restoreZones(positionsAfter, velocitiesAfter);
+}
+
+
+void Foam::polymer::contactProjection::writeReport(Ostream& os) const
+{
+    os  << "    re-projection after contacts: chain-steps "
+        << returnReduce(scalar(reprojected_), sumOp<scalar>())
+        << ", not converged "
+        << returnReduce(scalar(notConverged_), sumOp<scalar>())
+        << "; rigid impact zones "
+        << returnReduce(scalar(zonesFormed_), sumOp<scalar>())
+        << " of " << returnReduce(scalar(zoneChainSteps_), sumOp<scalar>())
+        << " chain-steps, held at the step's start "
+        << returnReduce(scalar(heldChainSteps_), sumOp<scalar>())
+        << ", kinetic energy removed "
+        << returnReduce(energyRemoved_, sumOp<scalar>())
+        << "; chain-steps left off "
+        << returnReduce(scalar(leftOff_), sumOp<scalar>())
+        << ", crossings left "
+        << returnReduce(scalar(crossingsLeft_), sumOp<scalar>())
+        << nl;
+}
+
+
+// ************************************************************************* //

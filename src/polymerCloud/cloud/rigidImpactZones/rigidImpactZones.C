@@ -1,0 +1,332 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "rigidImpactZones.H"
+#include <algorithm>
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+#include <Eigen/Dense>
+#pragma GCC diagnostic pop
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using Foam::vector;
+
+Eigen::Vector3d toEigen(const vector& v)
+{
+    return Eigen::Vector3d(v.x(), v.y(), v.z());
+}
+
+vector fromEigen(const Eigen::Vector3d& v)
+{
+    return vector(v(0), v(1), v(2));
+}
+
+// The rotation R minimising sum m |R r - q|^2 for the covariance
+// sum m q r^T (Kabsch): U diag(1, 1, d) V^T, d keeping det R = 1
+Eigen::Matrix3d bestRotation(const Eigen::Matrix3d& covariance)
+{
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd
+    (
+        covariance, Eigen::ComputeFullU | Eigen::ComputeFullV
+    );
+    Eigen::Matrix3d D = Eigen::Matrix3d::Identity();
+    D(2, 2) = (svd.matrixU()*svd.matrixV().transpose()).determinant() < 0
+        ? -1 : 1;
+    return svd.matrixU()*D*svd.matrixV().transpose();
+}
+
+// omega with I omega = L, I symmetric positive semi-definite; directions
+// of no inertia (a straight zone's axis) take no spin
+Eigen::Vector3d angularVelocity
+(
+    const Eigen::Matrix3d& inertia,
+    const Eigen::Vector3d& angularMomentum
+)
+{
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inertia);
+    const Eigen::Vector3d& lambda = eigen.eigenvalues();
+    const double cutoff = 1e-12*lambda.cwiseAbs().maxCoeff();
+    Eigen::Vector3d omega = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+    {
+        if (lambda(k) > cutoff)
+        {
+            const Eigen::Vector3d e = eigen.eigenvectors().col(k);
+            omega += e*(e.dot(angularMomentum)/lambda(k));
+        }
+    }
+    return omega;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::polymer::rigidImpactZones::root(const label chaini)
+{
+    label r = chaini;
+    while (parent_[r] != r)
+    {
+        r = parent_[r];
+    }
+    for (label c = chaini; parent_[c] != r; )
+    {
+        const label next = parent_[c];
+        parent_[c] = r;
+        c = next;
+    }
+    return r;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::polymer::rigidImpactZones::reset(const label nChains)
+{
+    parent_.setSize(nChains);
+    parent_ = -1;
+    size_.setSize(nChains);
+    size_ = 0;
+    held_.setSize(nChains);
+    held_ = false;
+}
+
+
+bool Foam::polymer::rigidImpactZones::sameZone
+(
+    const label chainA,
+    const label chainB
+)
+{
+    return inZone(chainA) && inZone(chainB) && root(chainA) == root(chainB);
+}
+
+
+bool Foam::polymer::rigidImpactZones::held(const label chaini)
+{
+    return held_[root(chaini)];
+}
+
+
+void Foam::polymer::rigidImpactZones::add(const label chaini)
+{
+    if (!inZone(chaini))
+    {
+        parent_[chaini] = chaini;
+        size_[chaini] = 1;
+    }
+}
+
+
+void Foam::polymer::rigidImpactZones::merge
+(
+    const label chainA,
+    const label chainB
+)
+{
+    add(chainA);
+    add(chainB);
+    label a = root(chainA);
+    label b = root(chainB);
+    if (a == b)
+    {
+        return;
+    }
+    if (size_[a] < size_[b])
+    {
+        std::swap(a, b);
+    }
+    parent_[b] = a;
+    size_[a] += size_[b];
+    held_[a] = held_[a] || held_[b];
+}
+
+
+void Foam::polymer::rigidImpactZones::hold(const label chaini)
+{
+    held_[root(chaini)] = true;
+}
+
+
+Foam::labelListList Foam::polymer::rigidImpactZones::zones()
+{
+    labelList zoneOfRoot(parent_.size(), -1);
+    DynamicList<DynamicList<label>> zones;
+    forAll(parent_, c)
+    {
+        if (!inZone(c))
+        {
+            continue;
+        }
+        const label r = root(c);
+        if (zoneOfRoot[r] < 0)
+        {
+            zoneOfRoot[r] = zones.size();
+            zones.append(DynamicList<label>());
+        }
+        zones[zoneOfRoot[r]].append(c);
+    }
+
+    labelListList result(zones.size());
+    forAll(zones, z)
+    {
+        result[z].transfer(zones[z]);
+    }
+    return result;
+}
+
+
+Foam::label Foam::polymer::rigidImpactZones::nChainsInZones() const
+{
+    label n = 0;
+    for (const label p : parent_)
+    {
+        n += (p >= 0);
+    }
+    return n;
+}
+
+
+void Foam::polymer::rigidImpactZones::place
+(
+    polymerChains& chains,
+    const labelUList& zoneChains,
+    const bool held,
+    const UList<point>& positionsStart,
+    const UList<vector>& velocitiesStart,
+    const UList<point>& positionsAfter,
+    const UList<vector>& velocitiesAfter
+)
+{
+    List<point>& x = chains.positions();
+    List<vector>& v = chains.velocities();
+
+    if (held)
+    {
+        for (const label c : zoneChains)
+        {
+            for (label i = chains.start(c); i < chains.end(c); ++i)
+            {
+                x[i] = positionsStart[i];
+                v[i] = velocitiesStart[i];
+            }
+        }
+        return;
+    }
+
+    // Centres of mass at the start and after the contacts, mean velocity
+    scalar mass = 0;
+    vector centreStart(Zero);
+    vector centreAfter(Zero);
+    vector momentum(Zero);
+    for (const label c : zoneChains)
+    {
+        const scalar m = chains.type(c).beadMass();
+        for (label i = chains.start(c); i < chains.end(c); ++i)
+        {
+            mass += m;
+            centreStart += m*positionsStart[i];
+            centreAfter += m*positionsAfter[i];
+            momentum += m*velocitiesAfter[i];
+        }
+    }
+    centreStart /= mass;
+    centreAfter /= mass;
+    const vector meanVelocity = momentum/mass;
+
+    // The rotation of x^n closest to the contacts' positions, and the
+    // angular momentum of the contacts' state about its centre of mass
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d angularMomentum = Eigen::Vector3d::Zero();
+    for (const label c : zoneChains)
+    {
+        const scalar m = chains.type(c).beadMass();
+        for (label i = chains.start(c); i < chains.end(c); ++i)
+        {
+            const Eigen::Vector3d q = toEigen(positionsAfter[i] - centreAfter);
+            covariance +=
+                m*q*toEigen(positionsStart[i] - centreStart).transpose();
+            angularMomentum +=
+                m*q.cross(toEigen(velocitiesAfter[i] - meanVelocity));
+        }
+    }
+    const Eigen::Matrix3d R = bestRotation(covariance);
+
+    Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+    for (const label c : zoneChains)
+    {
+        const scalar m = chains.type(c).beadMass();
+        for (label i = chains.start(c); i < chains.end(c); ++i)
+        {
+            const Eigen::Vector3d s =
+                R*toEigen(positionsStart[i] - centreStart);
+            x[i] = centreAfter + fromEigen(s);
+            inertia += m*(s.squaredNorm()*Eigen::Matrix3d::Identity()
+                - s*s.transpose());
+        }
+    }
+
+    const vector omega =
+        fromEigen(angularVelocity(inertia, angularMomentum));
+    for (const label c : zoneChains)
+    {
+        for (label i = chains.start(c); i < chains.end(c); ++i)
+        {
+            v[i] = meanVelocity + (omega ^ (x[i] - centreAfter));
+        }
+    }
+}
+
+
+void Foam::polymer::rigidImpactZones::placeAll
+(
+    polymerChains& chains,
+    const UList<point>& positionsStart,
+    const UList<vector>& velocitiesStart,
+    const UList<point>& positionsAfter,
+    const UList<vector>& velocitiesAfter
+)
+{
+    for (labelList& zone : zones())
+    {
+        // In the order of the chains' global ids: the sums of a zone are
+        // then the same whatever the processor and the chains' local order
+        std::sort
+        (
+            zone.begin(),
+            zone.end(),
+            [&](const label a, const label b)
+            {
+                return chains.globalId(a) < chains.globalId(b);
+            }
+        );
+        place
+        (
+            chains,
+            zone,
+            held(zone.first()),
+            positionsStart,
+            velocitiesStart,
+            positionsAfter,
+            velocitiesAfter
+        );
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,284 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "elasticRods.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::polymer::collisionModels::elasticRods::chainResponse
+(
+    const polymerChains& chains,
+    const label chaini,
+    const UList<label>& beads,
+    const UList<scalar>& weights,
+    const vector& n,
+    const scalar t,
+    List<vector>& response
+)
+{
+    const label first = chains.start(chaini);
+    response.setSize(chains.size(chaini));
+    response = Zero;
+    forAll(beads, k)
+    {
+        if (chains.chainOf(beads[k]) == chaini)
+        {
+            response[beads[k] - first] += weights[k]*n;
+        }
+    }
+
+    // The chain at t, where the impulse acts
+    for (label i = first; i < chains.end(chaini); ++i)
+    {
+        position_[i] = positionAt(i, t);
+        beadTime_[i] = t;
+    }
+
+    scalar largest;
+    if
+    (
+        !projection_.project
+        (
+            position_.cdata() + first, chains.type(chaini),
+            response.data(), largest
+        )
+    )
+    {
+        return false;
+    }
+    const scalar inverseMass = 1/chains.type(chaini).beadMass();
+    for (vector& r : response)
+    {
+        r *= inverseMass;
+    }
+    return true;
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::applyResponse
+(
+    const polymerChains& chains,
+    const label chaini,
+    const scalar J,
+    const UList<vector>& response,
+    UList<vector>& velocitiesDagger
+)
+{
+    const label first = chains.start(chaini);
+    for (label i = first; i < chains.end(chaini); ++i)
+    {
+        const vector dv = J*response[i - first];
+        velocity_[i] += dv;
+        velocitiesDagger[i] += dv;
+        queue_.changedCourse(i);
+        changedBeads_.append(i);
+    }
+}
+
+
+bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
+(
+    const event& e,
+    const polymerChains& chains,
+    UList<vector>& velocitiesDagger
+)
+{
+    const FixedList<label, 4>& beads = e.beads;
+    const vector& shift = grid_.pairShift(e.pair);
+    const rodPairCrossing pair
+    (
+        position_[beads[0]], position_[beads[1]],
+        position_[beads[2]] + shift, position_[beads[3]] + shift,
+        velocity_[beads[0]], velocity_[beads[1]],
+        velocity_[beads[2]], velocity_[beads[3]]
+    );
+    scalar lambdaI, lambdaJ;
+    vector n;
+    if (!pair.contact(0, lambdaI, lambdaJ, n))
+    {
+        return false;
+    }
+
+    // Each chain's response to the unit impulse J = 1 at the contact
+    const labelList fourBeads(beads);
+    const scalarList weights
+    ({
+        1 - lambdaI, lambdaI, lambdaJ - 1, -lambdaJ
+    });
+    const label chainI = chains.chainOf(beads[0]);
+    const label chainJ = chains.chainOf(beads[2]);
+    if (frozenChains_.found(chainI) || frozenChains_.found(chainJ))
+    {
+        return false;
+    }
+    List<vector> responseI, responseJ;
+    if
+    (
+        !chainResponse
+        (
+            chains, chainI, fourBeads, weights, n, e.time, responseI
+        )
+     || (
+            chainJ != chainI
+         && !chainResponse
+            (
+                chains, chainJ, fourBeads, weights, n, e.time, responseJ
+            )
+        )
+    )
+    {
+        return false;
+    }
+
+    // The contact's relative normal velocity u and its change per unit J
+    // (at most the free beads' sum w^2/m; a contact the chains' rods all
+    // but lock, as within a short ring, takes the dumbbell impulse)
+    scalar u = 0, contactResponse = 0, freeResponse = 0;
+    for (label k = 0; k < 4; ++k)
+    {
+        const label c = (k < 2) ? chainI : chainJ;
+        const List<vector>& r = (c == chainI) ? responseI : responseJ;
+        u += weights[k]*(velocity_[beads[k]] & n);
+        contactResponse += weights[k]*(r[beads[k] - chains.start(c)] & n);
+        freeResponse += sqr(weights[k])/chains.type(c).beadMass();
+    }
+    if (contactResponse <= 1e-8*freeResponse)
+    {
+        return false;
+    }
+
+    const scalar J = -2*u/contactResponse;
+    changedBeads_.clear();
+    applyResponse(chains, chainI, J, responseI, velocitiesDagger);
+    if (chainJ != chainI)
+    {
+        applyResponse(chains, chainJ, J, responseJ, velocitiesDagger);
+    }
+    return true;
+}
+
+
+bool Foam::polymer::collisionModels::elasticRods::reboundConstrained
+(
+    const event& e,
+    const polymerChains& chains,
+    UList<vector>& velocitiesDagger
+)
+{
+    const label bead = -1 - e.pair;
+    const scalar u = velocity_[bead] & e.normal;
+    const label c = chains.chainOf(bead);
+    List<vector> response;
+    if
+    (
+        u >= 0
+     || frozenChains_.found(c)
+     || !chainResponse
+        (
+            chains, c, labelList({bead}), scalarList({1.0}), e.normal,
+            e.time, response
+        )
+    )
+    {
+        return false;
+    }
+
+    // The bead's normal velocity reverses: J = -2u/(its response per unit)
+    const scalar perUnit = response[bead - chains.start(c)] & e.normal;
+    if (perUnit <= 1e-8/chains.type(c).beadMass())
+    {
+        return false;
+    }
+    changedBeads_.clear();
+    applyResponse(chains, c, -2*u/perUnit, response, velocitiesDagger);
+    wall_->countRebound();
+    return true;
+}
+
+
+bool Foam::polymer::collisionModels::elasticRods::resolve
+(
+    const event& e,
+    const polymerChains& chains,
+    UList<vector>& velocitiesDagger
+)
+{
+    const label pairi = e.pair;
+    const FixedList<label, 4>& beads = e.beads;
+
+    // The impact positions as the root solver evaluated them, on the
+    // not-yet-crossed side of the root
+    for (const label bead : beads)
+    {
+        position_[bead] =
+            positionAt(bead, e.from) + e.offset*velocity_[bead];
+        beadTime_[bead] = e.time;
+    }
+
+    if
+    (
+        impulse_ == impulseType::constrained
+     && resolveConstrained(e, chains, velocitiesDagger)
+    )
+    {
+        contacts_.record(pairi, e.side);
+        return true;
+    }
+
+    const vector& shift = grid_.pairShift(pairi);
+    const rodPairCrossing pair
+    (
+        position_[beads[0]], position_[beads[1]],
+        position_[beads[2]] + shift, position_[beads[3]] + shift,
+        velocity_[beads[0]], velocity_[beads[1]],
+        velocity_[beads[2]], velocity_[beads[3]]
+    );
+
+    FixedList<vector, 4> after;
+    if
+    (
+        !pair.elasticImpulse
+        (
+            0,
+            after,
+            chains.type(chains.chainOf(beads[0])).beadMass(),
+            chains.type(chains.chainOf(beads[2])).beadMass()
+        )
+    )
+    {
+        return false;
+    }
+
+    for (label k = 0; k < 4; ++k)
+    {
+        const label bead = beads[k];
+        velocitiesDagger[bead] += after[k] - velocity_[bead];
+        velocity_[bead] = after[k];
+        queue_.changedCourse(bead);
+    }
+
+    contacts_.record(pairi, e.side);
+
+    // The four beads, in the order of the pair's rods
+    const labelPair& rods = grid_.pairs()[pairi];
+    changedBeads_.clear();
+    for (const label rod : {rods.first(), rods.second()})
+    {
+        changedBeads_.append(rods_[rod].first());
+        changedBeads_.append(rods_[rod].second());
+    }
+
+    return true;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,249 @@
+/*---------------------------------------------------------------------------*\
+Description
+    Rigid impact zones (rigidImpactZones) on their own: zones merge as
+    disjoint sets and a held part holds the merged zone; a placed zone
+    keeps every rod at its start length (x^n's, exact), recovers a rigid
+    motion of x^n exactly, keeps the momentum and angular momentum the
+    contacts left for chains of different bead masses (1 and 5), and has
+    rigid velocities (no relative velocity along any rod, nor between any
+    two beads' separation); a straight zone, whose inertia about its axis
+    is zero, keeps a rigid motion without NaN; a held zone returns to x^n, v^n.
+\*---------------------------------------------------------------------------*/
+
+#include "testHelpers.H"
+#include "rigidImpactZones.H"
+
+using namespace polymerCloudTest;
+
+namespace
+{
+
+PtrList<chainType> twoMasses()
+{
+    PtrList<chainType> types(2);
+    types.set(0, new chainType("light", 6, 1, 1, 1, 1, false));
+    types.set(1, new chainType("heavy", 5, 1, 5, 1, 1, false));
+    return types;
+}
+
+
+// Two random walks of masses 1 and 5 near each other
+polymerChains twoWalks(const PtrList<chainType>& types, std::mt19937_64& gen)
+{
+    polymerChains chains(types);
+    chains.append(0, 0, randomWalk(6, 1, point(0, 0, 0), gen),
+        List<vector>(6, Zero));
+    chains.append(1, 1, randomWalk(5, 1, point(0.5, 0.3, 0.2), gen),
+        List<vector>(5, Zero));
+    return chains;
+}
+
+
+vector momentum(const polymerChains& chains, const UList<vector>& v)
+{
+    vector p(Zero);
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        for (label i = chains.start(c); i < chains.end(c); ++i)
+        {
+            p += chains.type(c).beadMass()*v[i];
+        }
+    }
+    return p;
+}
+
+
+vector angularMomentum
+(
+    const polymerChains& chains,
+    const UList<point>& x,
+    const UList<vector>& v
+)
+{
+    vector L(Zero);
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        for (label i = chains.start(c); i < chains.end(c); ++i)
+        {
+            L += chains.type(c).beadMass()*(x[i] ^ v[i]);
+        }
+    }
+    return L;
+}
+
+} // End anonymous namespace
+
+
+TEST(rigidImpactZones, ZonesMergeAndHeldPartsHold)
+{
+    rigidImpactZones zones;
+    zones.reset(6);
+    EXPECT_FALSE(zones.inZone(0));
+    zones.add(2);
+    zones.merge(0, 1);
+    zones.merge(3, 4);
+    EXPECT_TRUE(zones.sameZone(0, 1));
+    EXPECT_FALSE(zones.sameZone(0, 3));
+    EXPECT_FALSE(zones.sameZone(2, 5));
+    zones.hold(3);
+    EXPECT_TRUE(zones.held(4));
+    EXPECT_FALSE(zones.held(0));
+    zones.merge(1, 4);
+    EXPECT_TRUE(zones.sameZone(0, 3));
+    EXPECT_TRUE(zones.held(0));
+    EXPECT_FALSE(zones.held(2));
+    EXPECT_EQ(zones.nChainsInZones(), 5);
+    const labelListList z = zones.zones();
+    ASSERT_EQ(z.size(), 2);
+    EXPECT_EQ(z[0], labelList({0, 1, 3, 4}));
+    EXPECT_EQ(z[1], labelList({2}));
+}
+
+
+TEST(rigidImpactZones, RecoversARigidMotionExactly)
+{
+    std::mt19937_64 gen(11);
+    const PtrList<chainType> types(twoMasses());
+    polymerChains chains(twoWalks(types, gen));
+    const List<point> start(chains.positions());
+    const List<vector> velocitiesStart(chains.nBeads(), Zero);
+
+    // The contacts left both chains turned by 40 degrees and shifted
+    const tensor R
+    (
+        std::cos(0.7), -std::sin(0.7), 0,
+        std::sin(0.7), std::cos(0.7), 0,
+        0, 0, 1
+    );
+    List<point> after(start.size());
+    forAll(start, i)
+    {
+        after[i] = (R & start[i]) + vector(0.3, -0.2, 0.1);
+    }
+    const List<vector> velocitiesAfter(chains.nBeads(), vector(1, 0, 0));
+
+    rigidImpactZones::place
+    (
+        chains, labelList({0, 1}), false,
+        start, velocitiesStart, after, velocitiesAfter
+    );
+    forAll(after, i)
+    {
+        EXPECT_LT(mag(chains.positions()[i] - after[i]), 1e-13);
+        EXPECT_LT(mag(chains.velocities()[i] - vector(1, 0, 0)), 1e-13);
+    }
+}
+
+
+TEST(rigidImpactZones, KeepsRodsMomentumAndAngularMomentum)
+{
+    for (label seed = 1; seed <= 20; ++seed)
+    {
+        std::mt19937_64 gen(seed);
+        const PtrList<chainType> types(twoMasses());
+        polymerChains chains(twoWalks(types, gen));
+        const List<point> start(chains.positions());
+        const List<vector> velocitiesStart(chains.nBeads(), Zero);
+
+        // The contacts' state: each bead displaced and moving at random
+        List<point> after(start.size());
+        List<vector> velocitiesAfter(start.size());
+        forAll(start, i)
+        {
+            after[i] = start[i] + vector(0.2, 0, 0) + gaussian(gen, 0.3);
+            velocitiesAfter[i] = gaussian(gen, 1);
+        }
+
+        rigidImpactZones::place
+        (
+            chains, labelList({0, 1}), false,
+            start, velocitiesStart, after, velocitiesAfter
+        );
+        const List<point>& x = chains.positions();
+        const List<vector>& v = chains.velocities();
+
+        // Every pair of beads keeps its start distance (rods included)
+        // and has no relative velocity along its separation
+        forAll(x, i)
+        {
+            for (label j = i + 1; j < x.size(); ++j)
+            {
+                EXPECT_NEAR(mag(x[j] - x[i]), mag(start[j] - start[i]), 1e-13);
+                EXPECT_NEAR(((v[j] - v[i]) & (x[j] - x[i])), 0, 1e-12);
+            }
+        }
+        EXPECT_LT
+        (
+            mag(momentum(chains, v) - momentum(chains, velocitiesAfter)),
+            1e-12
+        );
+        EXPECT_LT
+        (
+            mag
+            (
+                angularMomentum(chains, x, v)
+              - angularMomentum(chains, after, velocitiesAfter)
+            ),
+            1e-11
+        ) << "seed " << seed;
+    }
+}
+
+
+TEST(rigidImpactZones, StraightZoneKeepsItsMotionDespiteNoInertiaAboutItsAxis)
+{
+    PtrList<chainType> types(oneType(4, 1, 1, 1, 1));
+    polymerChains chains(types);
+    const List<point> start({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}});
+    chains.append(0, 0, start, List<vector>(4, Zero));
+
+    // Translating along z and turning about z: a rigid motion the
+    // singular inertia (none about x) must keep
+    const List<point> after(start);
+    List<vector> velocitiesAfter(4);
+    forAll(start, i)
+    {
+        velocitiesAfter[i] = vector(0, (start[i].x() - 1.5), 0.5);
+    }
+    rigidImpactZones::place
+    (
+        chains, labelList({0}), false,
+        start, List<vector>(4, Zero), after, velocitiesAfter
+    );
+    forAll(start, i)
+    {
+        const vector& v = chains.velocities()[i];
+        EXPECT_TRUE(std::isfinite(v.x() + v.y() + v.z()));
+        EXPECT_LT(mag(chains.positions()[i] - start[i]), 1e-14);
+        EXPECT_LT(mag(v - velocitiesAfter[i]), 1e-13);
+    }
+}
+
+
+TEST(rigidImpactZones, HeldZoneReturnsToTheStepsStart)
+{
+    std::mt19937_64 gen(3);
+    const PtrList<chainType> types(twoMasses());
+    polymerChains chains(twoWalks(types, gen));
+    const List<point> start(chains.positions());
+    List<vector> velocitiesStart(chains.nBeads());
+    List<point> after(start.size());
+    forAll(start, i)
+    {
+        velocitiesStart[i] = gaussian(gen, 1);
+        after[i] = start[i] + gaussian(gen, 0.3);
+    }
+    rigidImpactZones::place
+    (
+        chains, labelList({1}), true,
+        start, velocitiesStart, after, List<vector>(start.size(), Zero)
+    );
+    for (label i = chains.start(1); i < chains.end(1); ++i)
+    {
+        EXPECT_EQ(chains.positions()[i], start[i]);
+        EXPECT_EQ(chains.velocities()[i], velocitiesStart[i]);
+    }
+}
+
+
+// ************************************************************************* //
