@@ -4,7 +4,7 @@
 # maxCo.
 set terminal pngcairo size 1300,520 font ",11"
 set output "maxCo.png"
-set multiplot layout 1,2 title "Contacts in flowing devices: the paper's treatment against rods through the chains, re-projected with rigid impact zones (constraint newton)"
+set multiplot layout 1,2 title "Contacts in flowing devices: the paper's treatment against rods through the chains, re-projected with rigid impact zones (exactRods); the paper's with newton"
 set logscale x 2
 set xrange [0.2:2.5]
 set xlabel "maxCo (the flow's Courant number)"

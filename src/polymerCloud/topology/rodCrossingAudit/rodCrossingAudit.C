@@ -310,7 +310,65 @@ Foam::polymer::rodCrossingAudit::check
         }
     }
 
-    // Sweep along x: sort the boxes by their lower x bound
+    // Rods whose beads stay put along the whole path: a pair of two such
+    // rods keeps its V and cannot cross
+    boolList moves(rods_.size(), false);
+    forAll(rods_, rodi)
+    {
+        for (const label bead : {rods_[rodi].first(), rods_[rodi].second()})
+        {
+            for (const List<point>& configuration : path)
+            {
+                moves[rodi] =
+                    moves[rodi] || configuration[bead] != path[0][bead];
+            }
+        }
+    }
+
+    DynamicList<crossing> found;
+    const auto checkIfNear = [&](const label a, const label b)
+    {
+        const labelPair& ra = rods_[a];
+        const labelPair& rb = rods_[b];
+        if
+        (
+            (moves[a] || moves[b])
+         && ra.first() != rb.first() && ra.first() != rb.second()
+         && ra.second() != rb.first() && ra.second() != rb.second()
+         && boxes[a].overlaps(boxes[b])
+        )
+        {
+            checkPair(ra, rb, path, found);
+        }
+    };
+
+    // Few rods moving (the re-projection after contacts): each against all
+    labelList moving(rods_.size());
+    label nMoving = 0;
+    forAll(moves, rodi)
+    {
+        if (moves[rodi])
+        {
+            moving[nMoving++] = rodi;
+        }
+    }
+    moving.setSize(nMoving);
+    if (4*nMoving < rods_.size())
+    {
+        for (const label a : moving)
+        {
+            forAll(rods_, b)
+            {
+                if (b != a && !(moves[b] && b < a))
+                {
+                    checkIfNear(a, b);
+                }
+            }
+        }
+        return List<crossing>(std::move(found));
+    }
+
+    // Else a sweep along x: the boxes sorted by their lower x bound
     labelList order(rods_.size());
     forAll(order, i)
     {
@@ -326,7 +384,6 @@ Foam::polymer::rodCrossingAudit::check
         }
     );
 
-    DynamicList<crossing> found;
     forAll(order, oi)
     {
         const label a = order[oi];
@@ -337,20 +394,9 @@ Foam::polymer::rodCrossingAudit::check
             {
                 break;
             }
-            const labelPair& ra = rods_[a];
-            const labelPair& rb = rods_[b];
-            if
-            (
-                ra.first() != rb.first() && ra.first() != rb.second()
-             && ra.second() != rb.first() && ra.second() != rb.second()
-             && boxes[a].overlaps(boxes[b])
-            )
-            {
-                checkPair(ra, rb, path, found);
-            }
+            checkIfNear(a, b);
         }
     }
-
     return List<crossing>(std::move(found));
 }
 

@@ -38,25 +38,31 @@ rodPairCrossing advanced(const rodPairCrossing& pair, const scalar s)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::polymer::pairContacts::leaveRoundOff
+bool Foam::polymer::pairContacts::leaveBand
 (
     const rodPairCrossing& pair,
-    const scalar tolerance,
-    const scalar T
+    const label side,
+    const scalar lower,
+    const scalar upper,
+    const scalar T,
+    scalar& inside,
+    scalar& outside
 )
 {
-    if (mag(pair.tripleProduct(0)) > tolerance)
+    const auto W = [&](const scalar s) { return side*pair.tripleProduct(s); };
+    const auto out = [&](const scalar s)
     {
-        return 0;
-    }
+        const scalar w = W(s);
+        return w > upper || w < lower;
+    };
 
     // The smallest s = T 2^-k outside the band, from 2^-52 up
-    scalar inside = 0;
-    scalar outside = -1;
+    inside = 0;
+    outside = -1;
     for (int k = 52; k >= 0; --k)
     {
         const scalar s = std::ldexp(T, -k);
-        if (mag(pair.tripleProduct(s)) > tolerance)
+        if (out(s))
         {
             outside = s;
             break;
@@ -65,15 +71,15 @@ Foam::scalar Foam::polymer::pairContacts::leaveRoundOff
     }
     if (outside < 0)
     {
-        return -1;
+        return false;
     }
 
     for (int iter = 0; iter < 60 && outside - inside > SMALL*outside; ++iter)
     {
         const scalar mid = 0.5*(inside + outside);
-        (mag(pair.tripleProduct(mid)) > tolerance ? outside : inside) = mid;
+        (out(mid) ? outside : inside) = mid;
     }
-    return outside;
+    return true;
 }
 
 
@@ -137,30 +143,38 @@ Foam::scalar Foam::polymer::pairContacts::earliestCrossing
     const scalar tol = tolerance(pair);
     side = this->side(pairi);
 
-    if (!side || mag(V0) > 2*tol)
+    // W = side V: positive on the pair's own side. Not at contact (well on
+    // its side, or crossed beyond round-off, when the lines met beyond the
+    // rods earlier in the step): the root solver's
+    if (!side || side*V0 > tol || side*V0 < -8*tol)
     {
         side = (V0 < 0) ? -1 : 1;
         return rootSolver.earliestCrossing(pair, T);
     }
 
-    // At contact on a known side: followed by V until it leaves round-off
-    const scalar sExit = leaveRoundOff(pair, tol, T);
-    if (sExit < 0)
+    // At contact: followed until W leaves [min(-2 tol, W(0) - tol), tol]
+    const scalar lower = min(-2*tol, side*V0 - tol);
+    scalar inside, outside;
+    if (!leaveBand(pair, side, lower, tol, T, inside, outside))
     {
         return -1;
     }
-    if (side*pair.tripleProduct(sExit) < 0)
+    if (side*pair.tripleProduct(outside) < 0)
     {
-        if (pair.crossesAt(sExit))
+        // Toward the crossed side: a crossing where the lines meet within
+        // both rods, at the band's edge (the next prediction, from there,
+        // is at contact again); else the lines met beyond the rods, and the
+        // pair's side is V's
+        if (pair.crossesAt(inside))
         {
-            return sExit;
+            return inside;
         }
         side = -side;
     }
 
     const scalar s =
-        rootSolver.earliestCrossing(advanced(pair, sExit), T - sExit);
-    return (s < 0) ? -1 : sExit + s;
+        rootSolver.earliestCrossing(advanced(pair, outside), T - outside);
+    return (s < 0) ? -1 : outside + s;
 }
 
 
