@@ -1,13 +1,14 @@
 /*---------------------------------------------------------------------------*\
 Description
     Rigid impact zones (rigidImpactZones) on their own: zones merge as
-    disjoint sets and a held part holds the merged zone; a placed zone
+    disjoint sets, listed in the order of the chains' global ids; a placed zone
     keeps every rod at its start length (x^n's, exact), recovers a rigid
     motion of x^n exactly, keeps the momentum and angular momentum the
     contacts left for chains of different bead masses (1 and 5), and has
     rigid velocities (no relative velocity along any rod, nor between any
     two beads' separation); a straight zone, whose inertia about its axis
-    is zero, keeps a rigid motion without NaN; a held zone returns to x^n, v^n.
+    is zero, keeps a rigid motion without NaN; a fraction of the motion is
+    that rigid motion's fraction (rods kept), none of it x^n.
 \*---------------------------------------------------------------------------*/
 
 #include "testHelpers.H"
@@ -74,8 +75,16 @@ vector angularMomentum
 } // End anonymous namespace
 
 
-TEST(rigidImpactZones, ZonesMergeAndHeldPartsHold)
+TEST(rigidImpactZones, ZonesMerge)
 {
+    PtrList<chainType> types(oneType(2, 1, 1, 1, 1));
+    polymerChains chains(types);
+    const List<point> dimer({{0, 0, 0}, {1, 0, 0}});
+    for (const label id : {5, 4, 3, 2, 1, 0})
+    {
+        chains.append(0, id, dimer, List<vector>(2, Zero));
+    }
+
     rigidImpactZones zones;
     zones.reset(6);
     EXPECT_FALSE(zones.inZone(0));
@@ -85,17 +94,14 @@ TEST(rigidImpactZones, ZonesMergeAndHeldPartsHold)
     EXPECT_TRUE(zones.sameZone(0, 1));
     EXPECT_FALSE(zones.sameZone(0, 3));
     EXPECT_FALSE(zones.sameZone(2, 5));
-    zones.hold(3);
-    EXPECT_TRUE(zones.held(4));
-    EXPECT_FALSE(zones.held(0));
     zones.merge(1, 4);
     EXPECT_TRUE(zones.sameZone(0, 3));
-    EXPECT_TRUE(zones.held(0));
-    EXPECT_FALSE(zones.held(2));
     EXPECT_EQ(zones.nChainsInZones(), 5);
-    const labelListList z = zones.zones();
+
+    // Chain c has global id 5 - c: each zone in the order of the ids
+    const labelListList z = zones.zones(chains);
     ASSERT_EQ(z.size(), 2);
-    EXPECT_EQ(z[0], labelList({0, 1, 3, 4}));
+    EXPECT_EQ(z[0], labelList({4, 3, 1, 0}));
     EXPECT_EQ(z[1], labelList({2}));
 }
 
@@ -106,7 +112,6 @@ TEST(rigidImpactZones, RecoversARigidMotionExactly)
     const PtrList<chainType> types(twoMasses());
     polymerChains chains(twoWalks(types, gen));
     const List<point> start(chains.positions());
-    const List<vector> velocitiesStart(chains.nBeads(), Zero);
 
     // The contacts left both chains turned by 40 degrees and shifted
     const tensor R
@@ -124,8 +129,7 @@ TEST(rigidImpactZones, RecoversARigidMotionExactly)
 
     rigidImpactZones::place
     (
-        chains, labelList({0, 1}), false,
-        start, velocitiesStart, after, velocitiesAfter
+        chains, labelList({0, 1}), 1, start, after, velocitiesAfter
     );
     forAll(after, i)
     {
@@ -143,8 +147,7 @@ TEST(rigidImpactZones, KeepsRodsMomentumAndAngularMomentum)
         const PtrList<chainType> types(twoMasses());
         polymerChains chains(twoWalks(types, gen));
         const List<point> start(chains.positions());
-        const List<vector> velocitiesStart(chains.nBeads(), Zero);
-
+    
         // The contacts' state: each bead displaced and moving at random
         List<point> after(start.size());
         List<vector> velocitiesAfter(start.size());
@@ -156,8 +159,7 @@ TEST(rigidImpactZones, KeepsRodsMomentumAndAngularMomentum)
 
         rigidImpactZones::place
         (
-            chains, labelList({0, 1}), false,
-            start, velocitiesStart, after, velocitiesAfter
+            chains, labelList({0, 1}), 1, start, after, velocitiesAfter
         );
         const List<point>& x = chains.positions();
         const List<vector>& v = chains.velocities();
@@ -207,8 +209,7 @@ TEST(rigidImpactZones, StraightZoneKeepsItsMotionDespiteNoInertiaAboutItsAxis)
     }
     rigidImpactZones::place
     (
-        chains, labelList({0}), false,
-        start, List<vector>(4, Zero), after, velocitiesAfter
+        chains, labelList({0}), 1, start, after, velocitiesAfter
     );
     forAll(start, i)
     {
@@ -220,28 +221,65 @@ TEST(rigidImpactZones, StraightZoneKeepsItsMotionDespiteNoInertiaAboutItsAxis)
 }
 
 
-TEST(rigidImpactZones, HeldZoneReturnsToTheStepsStart)
+TEST(rigidImpactZones, AFractionOfTheMotion)
 {
     std::mt19937_64 gen(3);
     const PtrList<chainType> types(twoMasses());
     polymerChains chains(twoWalks(types, gen));
     const List<point> start(chains.positions());
-    List<vector> velocitiesStart(chains.nBeads());
+
+    // The contacts left both chains turned by 40 degrees about z and
+    // shifted: half of it is 20 degrees and half the shift
+    const auto turned = [](const scalar angle)
+    {
+        return tensor
+        (
+            std::cos(angle), -std::sin(angle), 0,
+            std::sin(angle), std::cos(angle), 0,
+            0, 0, 1
+        );
+    };
+    const vector shift(0.3, -0.2, 0.1);
     List<point> after(start.size());
     forAll(start, i)
     {
-        velocitiesStart[i] = gaussian(gen, 1);
-        after[i] = start[i] + gaussian(gen, 0.3);
+        after[i] = (turned(0.7) & start[i]) + shift;
     }
+    const List<vector> velocitiesAfter(start.size(), vector(1, 0, 0));
+
+    // The centre of mass of the start, about which the zone turns
+    scalar mass = 0;
+    vector centre(Zero);
+    for (label c = 0; c < 2; ++c)
+    {
+        for (label i = chains.start(c); i < chains.end(c); ++i)
+        {
+            mass += chains.type(c).beadMass();
+            centre += chains.type(c).beadMass()*start[i];
+        }
+    }
+    centre /= mass;
+
     rigidImpactZones::place
     (
-        chains, labelList({1}), true,
-        start, velocitiesStart, after, List<vector>(start.size(), Zero)
+        chains, labelList({0, 1}), 0.5, start, after, velocitiesAfter
     );
-    for (label i = chains.start(1); i < chains.end(1); ++i)
+    const vector halfShift = 0.5*((turned(0.7) & centre) + shift - centre);
+    forAll(start, i)
     {
-        EXPECT_EQ(chains.positions()[i], start[i]);
-        EXPECT_EQ(chains.velocities()[i], velocitiesStart[i]);
+        const point expected =
+            centre + halfShift + (turned(0.35) & (start[i] - centre));
+        EXPECT_LT(mag(chains.positions()[i] - expected), 1e-13);
+    }
+
+    rigidImpactZones::place
+    (
+        chains, labelList({0, 1}), 0, start, after, velocitiesAfter
+    );
+    forAll(start, i)
+    {
+        EXPECT_LT(mag(chains.positions()[i] - start[i]), 1e-14);
+        EXPECT_LT(mag(chains.velocities()[i] - vector(1, 0, 0)), 1e-13);
     }
 }
 

@@ -30,8 +30,8 @@ unset logscale y
 set format y "%g"
 set yrange [0:*]
 set ylabel "cloud CPU per bead-step (us)"
-plot for [i=1:3] data using 2:(strcol(1) eq word(scenes, i) && strcol(3) eq "paper" && $14 > 0 ? 1e6*$13/$14 : 1/0) \
+plot for [i=1:3] data using 2:(strcol(1) eq word(scenes, i) && strcol(3) eq "paper" && $15 > 0 ? 1e6*$14/$15 : 1/0) \
         with linespoints lw 2 pt 7 lc rgb word(colours, i) title word(scenes, i)." paper's", \
-     for [i=1:3] data using 2:(strcol(1) eq word(scenes, i) && strcol(3) eq "default" && $14 > 0 ? 1e6*$13/$14 : 1/0) \
+     for [i=1:3] data using 2:(strcol(1) eq word(scenes, i) && strcol(3) eq "default" && $15 > 0 ? 1e6*$14/$15 : 1/0) \
         with linespoints lw 2 dt 2 pt 5 lc rgb word(colours, i) title word(scenes, i)." default"
 unset multiplot

@@ -30,6 +30,7 @@ Foam::polymer::contactProjection::contactProjection
     reprojected_(0),
     notConverged_(0),
     zoneChainSteps_(0),
+    stoppedChainSteps_(0),
     heldChainSteps_(0),
     leftOff_(0),
     zonesFormed_(0),
@@ -109,23 +110,21 @@ bool Foam::polymer::contactProjection::checkPaths
     const scalar time
 )
 {
-    // Walls first: a projected chain whose path meets one becomes a zone,
-    // a zone whose rigid path meets one is held at the step's start (where
-    // its beads were in the fluid)
+    // Walls first: a projected chain whose path meets one becomes a zone
+    // (which placeZones keeps in the fluid)
     bool changed = false;
     if (wall && wall->active())
     {
         forAll(moved, c)
         {
-            const bool inZone = zones_.inZone(c);
             if
             (
-                (moved[c] || inZone)
-             && !(inZone && zones_.held(c))
+                moved[c]
+             && !zones_.inZone(c)
              && meetsWall(*wall, c, positionsAfter)
             )
             {
-                inZone ? zones_.hold(c) : zones_.add(c);
+                zones_.add(c);
                 changed = true;
             }
         }
@@ -174,7 +173,7 @@ void Foam::polymer::contactProjection::restoreZones
     const UList<vector>& velocitiesAfter
 )
 {
-    for (const labelList& zone : zones_.zones())
+    for (const labelList& zone : placed_)
     {
         for (const label c : zone)
         {
@@ -195,14 +194,14 @@ void Foam::polymer::contactProjection::countZones
 )
 {
     const List<vector>& v = chains_.velocities();
-    for (const labelList& zone : zones_.zones())
+    forAll(placed_, z)
     {
         ++zonesFormed_;
-        const bool held = zones_.held(zone.first());
-        for (const label c : zone)
+        for (const label c : placed_[z])
         {
             ++zoneChainSteps_;
-            heldChainSteps_ += held;
+            stoppedChainSteps_ += (fractions_[z] < 1);
+            heldChainSteps_ += (fractions_[z] == 0);
             const scalar m = chains_.type(c).beadMass();
             for (label i = chains_.start(c); i < chains_.end(c); ++i)
             {
@@ -214,12 +213,87 @@ void Foam::polymer::contactProjection::countZones
 }
 
 
+Foam::scalar Foam::polymer::contactProjection::placeZone
+(
+    const labelList& zone,
+    const wallModel* wall,
+    const UList<point>& positionsStart,
+    const UList<point>& positionsAfter,
+    const UList<vector>& velocitiesAfter
+)
+{
+    const List<point>& x = chains_.positions();
+    scalar fraction = 1;
+    for (label attempt = 0; attempt <= 5; ++attempt)
+    {
+        if (attempt == 5)
+        {
+            fraction = 0;
+        }
+        rigidImpactZones::place
+        (
+            chains_, zone, fraction,
+            positionsStart, positionsAfter, velocitiesAfter
+        );
+        if (!fraction || !wall || !wall->active())
+        {
+            break;
+        }
+
+        // The first meeting of a bead's path from x^n with the walls
+        scalar first = GREAT;
+        wallModel::impact hit;
+        for (const label c : zone)
+        {
+            for (label i = chains_.start(c); i < chains_.end(c); ++i)
+            {
+                if
+                (
+                    wall->predict
+                    (
+                        positionsStart[i], x[i] - positionsStart[i], 1, hit
+                    )
+                )
+                {
+                    first = min(first, hit.time);
+                }
+            }
+        }
+        if (first > 1)
+        {
+            break;
+        }
+        fraction *= 0.9*first;
+    }
+    return fraction;
+}
+
+
+void Foam::polymer::contactProjection::placeZones
+(
+    const wallModel* wall,
+    const UList<point>& positionsStart,
+    const UList<point>& positionsAfter,
+    const UList<vector>& velocitiesAfter
+)
+{
+    placed_ = zones_.zones(chains_);
+    fractions_.setSize(placed_.size());
+    forAll(placed_, z)
+    {
+        fractions_[z] = placeZone
+        (
+            placed_[z], wall, positionsStart, positionsAfter, velocitiesAfter
+        );
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::polymer::contactProjection::correct
 (
     const UList<point>& positionsStart,
-    const UList<vector>& velocitiesStart,
     const scalar deltaT,
     const scalar time,
     const wallModel* wall
@@ -251,6 +325,8 @@ void Foam::polymer::contactProjection::correct
     const List<point> positionsAfter(chains_.positions());
     const List<vector> velocitiesAfter(chains_.velocities());
     zones_.reset(chains_.nChains());
+    placed_.clear();
+    fractions_.clear();
     forAll(moved, c)
     {
         if (moved[c] && !reprojectChain(c, positionsAfter, deltaT, time))
@@ -264,14 +340,7 @@ void Foam::polymer::contactProjection::correct
     const label maxPasses = 3*chains_.nChains() + 2;
     for (label pass = 0; pass < maxPasses; ++pass)
     {
-        zones_.placeAll
-        (
-            chains_,
-            positionsStart,
-            velocitiesStart,
-            positionsAfter,
-            velocitiesAfter
-        );
+        placeZones(wall, positionsStart, positionsAfter, velocitiesAfter);
         if (!checkPaths(audit, wall, moved, positionsAfter, time))
         {
             countZones(velocitiesAfter);
@@ -296,7 +365,9 @@ void Foam::polymer::contactProjection::writeReport(Ostream& os) const
         << "; rigid impact zones "
         << returnReduce(scalar(zonesFormed_), sumOp<scalar>())
         << " of " << returnReduce(scalar(zoneChainSteps_), sumOp<scalar>())
-        << " chain-steps, held at the step's start "
+        << " chain-steps, stopped short by a wall "
+        << returnReduce(scalar(stoppedChainSteps_), sumOp<scalar>())
+        << ", held at the step's start "
         << returnReduce(scalar(heldChainSteps_), sumOp<scalar>())
         << ", kinetic energy removed "
         << returnReduce(energyRemoved_, sumOp<scalar>())

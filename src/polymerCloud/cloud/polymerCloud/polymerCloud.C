@@ -310,7 +310,6 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
         contactProjection_->correct
         (
             stepper_->positionsOld(),
-            stepper_->velocitiesOld(),
             deltaT,
             time,
             wall_.get()

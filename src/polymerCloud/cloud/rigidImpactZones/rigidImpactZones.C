@@ -102,8 +102,6 @@ void Foam::polymer::rigidImpactZones::reset(const label nChains)
     parent_ = -1;
     size_.setSize(nChains);
     size_ = 0;
-    held_.setSize(nChains);
-    held_ = false;
 }
 
 
@@ -114,12 +112,6 @@ bool Foam::polymer::rigidImpactZones::sameZone
 )
 {
     return inZone(chainA) && inZone(chainB) && root(chainA) == root(chainB);
-}
-
-
-bool Foam::polymer::rigidImpactZones::held(const label chaini)
-{
-    return held_[root(chaini)];
 }
 
 
@@ -153,17 +145,13 @@ void Foam::polymer::rigidImpactZones::merge
     }
     parent_[b] = a;
     size_[a] += size_[b];
-    held_[a] = held_[a] || held_[b];
 }
 
 
-void Foam::polymer::rigidImpactZones::hold(const label chaini)
-{
-    held_[root(chaini)] = true;
-}
-
-
-Foam::labelListList Foam::polymer::rigidImpactZones::zones()
+Foam::labelListList Foam::polymer::rigidImpactZones::zones
+(
+    const polymerChains& chains
+)
 {
     labelList zoneOfRoot(parent_.size(), -1);
     DynamicList<DynamicList<label>> zones;
@@ -186,6 +174,15 @@ Foam::labelListList Foam::polymer::rigidImpactZones::zones()
     forAll(zones, z)
     {
         result[z].transfer(zones[z]);
+        std::sort
+        (
+            result[z].begin(),
+            result[z].end(),
+            [&](const label a, const label b)
+            {
+                return chains.globalId(a) < chains.globalId(b);
+            }
+        );
     }
     return result;
 }
@@ -206,28 +203,14 @@ void Foam::polymer::rigidImpactZones::place
 (
     polymerChains& chains,
     const labelUList& zoneChains,
-    const bool held,
+    const scalar fraction,
     const UList<point>& positionsStart,
-    const UList<vector>& velocitiesStart,
     const UList<point>& positionsAfter,
     const UList<vector>& velocitiesAfter
 )
 {
     List<point>& x = chains.positions();
     List<vector>& v = chains.velocities();
-
-    if (held)
-    {
-        for (const label c : zoneChains)
-        {
-            for (label i = chains.start(c); i < chains.end(c); ++i)
-            {
-                x[i] = positionsStart[i];
-                v[i] = velocitiesStart[i];
-            }
-        }
-        return;
-    }
 
     // Centres of mass at the start and after the contacts, mean velocity
     scalar mass = 0;
@@ -248,9 +231,11 @@ void Foam::polymer::rigidImpactZones::place
     centreStart /= mass;
     centreAfter /= mass;
     const vector meanVelocity = momentum/mass;
+    const vector centre = centreStart + fraction*(centreAfter - centreStart);
 
-    // The rotation of x^n closest to the contacts' positions, and the
-    // angular momentum of the contacts' state about its centre of mass
+    // The rotation of x^n closest to the contacts' positions (its fraction
+    // of it), and the angular momentum of the contacts' state about its
+    // centre of mass
     Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
     Eigen::Vector3d angularMomentum = Eigen::Vector3d::Zero();
     for (const label c : zoneChains)
@@ -265,7 +250,13 @@ void Foam::polymer::rigidImpactZones::place
                 m*q.cross(toEigen(velocitiesAfter[i] - meanVelocity));
         }
     }
-    const Eigen::Matrix3d R = bestRotation(covariance);
+    Eigen::Matrix3d R = bestRotation(covariance);
+    if (fraction != 1)
+    {
+        const Eigen::AngleAxisd turn(R);
+        R = Eigen::AngleAxisd(fraction*turn.angle(), turn.axis())
+            .toRotationMatrix();
+    }
 
     Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
     for (const label c : zoneChains)
@@ -275,7 +266,7 @@ void Foam::polymer::rigidImpactZones::place
         {
             const Eigen::Vector3d s =
                 R*toEigen(positionsStart[i] - centreStart);
-            x[i] = centreAfter + fromEigen(s);
+            x[i] = centre + fromEigen(s);
             inertia += m*(s.squaredNorm()*Eigen::Matrix3d::Identity()
                 - s*s.transpose());
         }
@@ -287,44 +278,8 @@ void Foam::polymer::rigidImpactZones::place
     {
         for (label i = chains.start(c); i < chains.end(c); ++i)
         {
-            v[i] = meanVelocity + (omega ^ (x[i] - centreAfter));
+            v[i] = meanVelocity + (omega ^ (x[i] - centre));
         }
-    }
-}
-
-
-void Foam::polymer::rigidImpactZones::placeAll
-(
-    polymerChains& chains,
-    const UList<point>& positionsStart,
-    const UList<vector>& velocitiesStart,
-    const UList<point>& positionsAfter,
-    const UList<vector>& velocitiesAfter
-)
-{
-    for (labelList& zone : zones())
-    {
-        // In the order of the chains' global ids: the sums of a zone are
-        // then the same whatever the processor and the chains' local order
-        std::sort
-        (
-            zone.begin(),
-            zone.end(),
-            [&](const label a, const label b)
-            {
-                return chains.globalId(a) < chains.globalId(b);
-            }
-        );
-        place
-        (
-            chains,
-            zone,
-            held(zone.first()),
-            positionsStart,
-            velocitiesStart,
-            positionsAfter,
-            velocitiesAfter
-        );
     }
 }
 
