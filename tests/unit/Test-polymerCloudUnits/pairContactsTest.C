@@ -55,7 +55,12 @@ TEST(pairContacts, LeavingOnItsOwnSideIsNoCrossing)
     pairContacts contacts;
     contacts.record(3, -1);
     label side = 0;
-    EXPECT_EQ(contacts.earliestCrossing(3, pair, solver(), 0.02, side), -1);
+    bool atContact = false;
+    EXPECT_EQ
+    (
+        contacts.earliestCrossing(3, pair, solver(), 0.02, side, atContact),
+        -1
+    );
     EXPECT_EQ(side, -1);
 }
 
@@ -69,9 +74,11 @@ TEST(pairContacts, TurnedBackAtContactCrossesAtOnce)
     {
         const rodPairCrossing pair(rodsAt(0.1, z, -1));
         label side = 0;
+        bool atContact = false;
         const scalar s =
-            contacts.earliestCrossing(0, pair, solver(), 0.02, side);
+            contacts.earliestCrossing(0, pair, solver(), 0.02, side, atContact);
         EXPECT_GE(s, 0) << "z " << z;
+        EXPECT_TRUE(atContact) << "z " << z;
         EXPECT_LT(s, 1e-13) << "z " << z;
         EXPECT_EQ(side, -1);
         // Past the root by no more than round-off
@@ -98,14 +105,15 @@ TEST(pairContacts, ResolvedAndTurnedBackIsNoSecondEvent)
     for (const scalar z : {1e-15, -1e-15, -1.5*tol, -5*tol})
     {
         label side = 0;
+        bool atContact = false;
         const scalar s =
-            contacts.earliestCrossing(0, rodsAt(0.1, z, -1), solver(), 0.02, side);
+            contacts.earliestCrossing(0, rodsAt(0.1, z, -1), solver(), 0.02, side, atContact);
         ASSERT_GE(s, 0) << "z " << z;
         EXPECT_EQ(side, -1);
 
         // Resolved there: the same positions, the velocity reversed
         const rodPairCrossing after(rodsAt(0.1, z - s, 1));
-        EXPECT_EQ(contacts.earliestCrossing(0, after, solver(), 0.02, side), -1)
+        EXPECT_EQ(contacts.earliestCrossing(0, after, solver(), 0.02, side, atContact), -1)
             << "z " << z;
     }
 }
@@ -117,9 +125,10 @@ TEST(pairContacts, LinesMeetingBeyondTheRodsIsNoCrossing)
     pairContacts contacts;
     contacts.record(0, -1);
     label side = 0;
+    bool atContact = false;
     EXPECT_EQ
     (
-        contacts.earliestCrossing(0, rodsAt(0.8, 1e-15, -1), solver(), 0.02, side),
+        contacts.earliestCrossing(0, rodsAt(0.8, 1e-15, -1), solver(), 0.02, side, atContact),
         -1
     );
     EXPECT_EQ(side, 1);
@@ -136,13 +145,49 @@ TEST(pairContacts, UnrecordedPairsAreTheRootSolversAlone)
     {
         const rodPairCrossing pair(rodsAt(0.1, z, 1));
         label side = 0;
+        bool atContact = false;
         EXPECT_EQ
         (
-            contacts.earliestCrossing(1, pair, solver(), 0.02, side),
+            contacts.earliestCrossing(1, pair, solver(), 0.02, side, atContact),
             solver->earliestCrossing(pair, 0.02)
         );
         EXPECT_EQ(side, pair.tripleProduct(0) < 0 ? -1 : 1);
     }
+}
+
+
+// The side a pair crosses from is V's sign just before its root, against
+// the slope there: rod B passing down through rod A (V = -z_B rising) from
+// above crosses from side -1, up from below from side +1; a zero slope
+// keeps the fallback
+TEST(pairContacts, SideBeforeTheRoot)
+{
+    EXPECT_EQ(pairContacts::sideBefore(rodsAt(0.1, 0.01, -1), 0.01, 1), -1);
+    EXPECT_EQ(pairContacts::sideBefore(rodsAt(0.1, -0.01, 1), 0.01, -1), 1);
+    EXPECT_EQ(pairContacts::sideBefore(rodsAt(0.1, 0.01, 0), 0.01, 1), 1);
+    EXPECT_EQ(pairContacts::sideBefore(rodsAt(0.1, 0.01, -1), -1, 1), 1);
+}
+
+
+// Resolutions at the contact band's edge are counted in a row (the event
+// loop stops a step whose pair reaches stallEvents of them: a grazing
+// contact its impulses do not separate); another resolution ends the row,
+// and a new step forgets it
+TEST(pairContacts, ContactStreaks)
+{
+    pairContacts contacts;
+    for (label k = 0; k < 3; ++k)
+    {
+        contacts.record(2, 1, true);
+    }
+    EXPECT_EQ(contacts.contactStreak(2), 3);
+    EXPECT_EQ(contacts.contactStreak(7), 0);
+    contacts.record(2, 1, false);
+    EXPECT_EQ(contacts.contactStreak(2), 0);
+    contacts.record(2, 1, true);
+    contacts.clear();
+    EXPECT_EQ(contacts.contactStreak(2), 0);
+    EXPECT_EQ(contacts.side(2), 0);
 }
 
 

@@ -128,8 +128,11 @@ void Foam::polymer::collisionModels::elasticRods::predict
     );
 
     label side = 0;
-    const scalar s =
-        contacts_.earliestCrossing(pairi, pair, *rootSolver_, dt - t, side);
+    bool atContact = false;
+    const scalar s = contacts_.earliestCrossing
+    (
+        pairi, pair, *rootSolver_, dt - t, side, atContact
+    );
     ++counters_.pairChecks;
 
     if (debug > 1 && s >= 0)
@@ -152,6 +155,7 @@ void Foam::polymer::collisionModels::elasticRods::predict
         e.normal = Zero;
         e.patch = -1;
         e.side = side;
+        e.atContact = atContact;
         e.beads = FixedList<label, 4>({a0, a1, b0, b1});
         queue_.push(e);
     }
@@ -179,6 +183,7 @@ void Foam::polymer::collisionModels::elasticRods::predictWall
         e.normal = hit.normal;
         e.patch = hit.patch;
         e.side = 0;
+        e.atContact = false;
         e.beads = FixedList<label, 4>({bead, -1, -1, -1});
         queue_.push(e);
     }
@@ -311,7 +316,13 @@ void Foam::polymer::collisionModels::elasticRods::reportStall
         << chains.globalId(rods_.chain(grid_.pairs()[pairi].first()))
         << " and "
         << chains.globalId(rods_.chain(grid_.pairs()[pairi].second()))
-        << (nEvents >= maxEvents_ ? " (maxEvents)" : " (tau -> 0 stall)")
+        << (
+               nEvents >= maxEvents_ ? " (maxEvents)"
+             : contacts_.contactStreak(pairi) >= stallEvents_
+             ? " (the pair resolved stallEvents times in a row at its"
+               " contact: a grazing contact its impulses do not separate)"
+             : " (tau -> 0 stall)"
+           )
         << ": the beads stay at the last uncrossed state of the step"
         << endl;
 }
@@ -390,7 +401,12 @@ void Foam::polymer::collisionModels::elasticRods::correct
         nShort = (e.time - now < stallTime_*deltaT) ? nShort + 1 : 0;
         now = e.time;
 
-        if (nShort >= stallEvents_ || nEvents + nWallEvents >= maxEvents_)
+        if
+        (
+            nShort >= stallEvents_
+         || nEvents + nWallEvents >= maxEvents_
+         || (!wallEvent && contacts_.contactStreak(e.pair) >= stallEvents_)
+        )
         {
             reportStall
             (

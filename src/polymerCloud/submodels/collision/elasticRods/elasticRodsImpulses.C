@@ -230,7 +230,7 @@ bool Foam::polymer::collisionModels::elasticRods::resolve
      && resolveConstrained(e, chains, velocitiesDagger)
     )
     {
-        contacts_.record(pairi, e.side);
+        contacts_.record(pairi, e.side, e.atContact);
         return true;
     }
 
@@ -266,7 +266,7 @@ bool Foam::polymer::collisionModels::elasticRods::resolve
         queue_.changedCourse(bead);
     }
 
-    contacts_.record(pairi, e.side);
+    contacts_.record(pairi, e.side, e.atContact);
 
     // The four beads, in the order of the pair's rods
     const labelPair& rods = grid_.pairs()[pairi];

@@ -85,25 +85,51 @@ bool Foam::polymer::pairContacts::leaveBand
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::label Foam::polymer::pairContacts::sideBefore
+(
+    const rodPairCrossing& pair,
+    const scalar s,
+    const label fallback
+)
+{
+    if (s < 0)
+    {
+        return fallback;
+    }
+    const FixedList<scalar, 4> c = pair.tripleProductCubic();
+    const scalar slope = c[1] + s*(2*c[2] + 3*s*c[3]);
+    return (slope > 0) ? -1 : (slope < 0) ? 1 : fallback;
+}
+
+
+
 void Foam::polymer::pairContacts::clear()
 {
     for (const label pairi : resolved_)
     {
         sides_[pairi] = 0;
+        streaks_[pairi] = 0;
     }
     resolved_.clear();
 }
 
 
-void Foam::polymer::pairContacts::record(const label pairi, const label side)
+void Foam::polymer::pairContacts::record
+(
+    const label pairi,
+    const label side,
+    const bool atContact
+)
 {
     if (pairi >= sides_.size())
     {
         const label oldSize = sides_.size();
         sides_.resize(pairi + 1);
+        streaks_.resize(pairi + 1);
         for (label i = oldSize; i < sides_.size(); ++i)
         {
             sides_[i] = 0;
+            streaks_[i] = 0;
         }
     }
     if (!sides_[pairi])
@@ -111,6 +137,7 @@ void Foam::polymer::pairContacts::record(const label pairi, const label side)
         resolved_.append(pairi);
     }
     sides_[pairi] = (side < 0) ? -1 : 1;
+    streaks_[pairi] = atContact ? streaks_[pairi] + 1 : 0;
 }
 
 
@@ -136,9 +163,11 @@ Foam::scalar Foam::polymer::pairContacts::earliestCrossing
     const rodPairCrossing& pair,
     const crossingRootSolver& rootSolver,
     const scalar T,
-    label& side
+    label& side,
+    bool& atContact
 ) const
 {
+    atContact = false;
     const scalar V0 = pair.tripleProduct(0);
     const scalar tol = tolerance(pair);
     side = this->side(pairi);
@@ -146,10 +175,11 @@ Foam::scalar Foam::polymer::pairContacts::earliestCrossing
     // W = side V: positive on the pair's own side. Not at contact (well on
     // its side, or crossed beyond round-off, when the lines met beyond the
     // rods earlier in the step): the root solver's
-    if (!side || side*V0 > tol || side*V0 < -8*tol)
+    if (!side || side*V0 > tol || side*V0 < -1000*tol)
     {
-        side = (V0 < 0) ? -1 : 1;
-        return rootSolver.earliestCrossing(pair, T);
+        const scalar s = rootSolver.earliestCrossing(pair, T);
+        side = sideBefore(pair, s, (V0 < 0) ? -1 : 1);
+        return s;
     }
 
     // At contact: followed until W leaves [min(-2 tol, W(0) - tol), tol]
@@ -167,6 +197,7 @@ Foam::scalar Foam::polymer::pairContacts::earliestCrossing
         // pair's side is V's
         if (pair.crossesAt(inside))
         {
+            atContact = true;
             return inside;
         }
         side = -side;
@@ -174,7 +205,12 @@ Foam::scalar Foam::polymer::pairContacts::earliestCrossing
 
     const scalar s =
         rootSolver.earliestCrossing(advanced(pair, outside), T - outside);
-    return (s < 0) ? -1 : outside + s;
+    if (s < 0)
+    {
+        return -1;
+    }
+    side = sideBefore(pair, outside + s, side);
+    return outside + s;
 }
 
 
