@@ -140,11 +140,22 @@ bool Foam::polymer::wallModels::levelSet::predict
         hit.patch = mesh_.boundaryMesh().whichPatch(facei);
 
         // The level set is the distance to the walls: at another patch
-        // (an outlet, say) the boundary's normal is its face's
-        if (!isA<wallPolyPatch>(mesh_.boundaryMesh()[hit.patch]))
+        // (an outlet, say) the boundary's normal is its face's. So is it
+        // where the gradient does not oppose the path (near a re-entrant
+        // corner the interpolated gradient blends two walls'), so that a
+        // rebound always turns the bead back; head-on if neither does
+        if
+        (
+            !isA<wallPolyPatch>(mesh_.boundaryMesh()[hit.patch])
+         || (v & hit.normal) >= 0
+        )
         {
             const vector area = mesh_.faceAreas()[facei];
             hit.normal = -area/mag(area);
+            if ((v & hit.normal) >= 0)
+            {
+                hit.normal = -v/mag(v);
+            }
         }
         return true;
     }
