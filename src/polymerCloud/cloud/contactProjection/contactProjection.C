@@ -81,59 +81,67 @@ bool Foam::polymer::contactProjection::reprojectChain
 }
 
 
-bool Foam::polymer::contactProjection::meetsWall
+Foam::scalar Foam::polymer::contactProjection::firstWallMeeting
 (
     const wallModel& wall,
-    const label c,
-    const UList<point>& positionsAfter
+    const labelUList& chainList,
+    const UList<point>& from
 ) const
 {
     const List<point>& x = chains_.positions();
+    scalar first = GREAT;
     wallModel::impact hit;
-    for (label i = chains_.start(c); i < chains_.end(c); ++i)
+    for (const label c : chainList)
     {
-        if (wall.predict(positionsAfter[i], x[i] - positionsAfter[i], 1, hit))
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
         {
-            return true;
+            if (wall.predict(from[i], x[i] - from[i], 1, hit))
+            {
+                first = min(first, hit.time);
+            }
         }
     }
-    return false;
+    return first;
+}
+
+
+void Foam::polymer::contactProjection::addWallZones
+(
+    const wallModel* wall,
+    const boolList& moved,
+    const UList<point>& positionsAfter
+)
+{
+    // A projected chain whose path meets a wall becomes a zone (which
+    // placeZones keeps in the fluid); projected chains move no further, so
+    // this is checked once
+    if (!wall || !wall->active())
+    {
+        return;
+    }
+    forAll(moved, c)
+    {
+        if
+        (
+            moved[c]
+         && !zones_.inZone(c)
+         && firstWallMeeting(*wall, labelList(1, c), positionsAfter) <= 1
+        )
+        {
+            zones_.add(c);
+        }
+    }
 }
 
 
 bool Foam::polymer::contactProjection::checkPaths
 (
     const rodCrossingAudit& audit,
-    const wallModel* wall,
     const boolList& moved,
     const UList<point>& positionsAfter,
     const scalar time
 )
 {
-    // Walls first: a projected chain whose path meets one becomes a zone
-    // (which placeZones keeps in the fluid)
-    bool changed = false;
-    if (wall && wall->active())
-    {
-        forAll(moved, c)
-        {
-            if
-            (
-                moved[c]
-             && !zones_.inZone(c)
-             && meetsWall(*wall, c, positionsAfter)
-            )
-            {
-                zones_.add(c);
-                changed = true;
-            }
-        }
-    }
-    if (changed)
-    {
-        return true;
-    }
-
     if (!uncrossable_)
     {
         return false;
@@ -141,6 +149,7 @@ bool Foam::polymer::contactProjection::checkPaths
 
     // Rods that would cross join one zone; a zone's own rods cannot cross,
     // since it moves rigidly from the step's start
+    bool changed = false;
     const List<rodCrossingAudit::crossing> found =
         audit.check(positionsAfter, chains_.positions());
     for (const rodCrossingAudit::crossing& crossing : found)
@@ -222,7 +231,6 @@ Foam::scalar Foam::polymer::contactProjection::placeZone
     const UList<vector>& velocitiesAfter
 )
 {
-    const List<point>& x = chains_.positions();
     scalar fraction = 1;
     for (label attempt = 0; attempt <= 5; ++attempt)
     {
@@ -241,24 +249,7 @@ Foam::scalar Foam::polymer::contactProjection::placeZone
         }
 
         // The first meeting of a bead's path from x^n with the walls
-        scalar first = GREAT;
-        wallModel::impact hit;
-        for (const label c : zone)
-        {
-            for (label i = chains_.start(c); i < chains_.end(c); ++i)
-            {
-                if
-                (
-                    wall->predict
-                    (
-                        positionsStart[i], x[i] - positionsStart[i], 1, hit
-                    )
-                )
-                {
-                    first = min(first, hit.time);
-                }
-            }
-        }
+        const scalar first = firstWallMeeting(*wall, zone, positionsStart);
         if (first > 1)
         {
             break;
@@ -335,13 +326,15 @@ void Foam::polymer::contactProjection::correct
         }
     }
 
+    addWallZones(wall, moved, positionsAfter);
+
     rods_.update(chains_);
     const rodCrossingAudit audit(rods_.rods());
     const label maxPasses = 3*chains_.nChains() + 2;
     for (label pass = 0; pass < maxPasses; ++pass)
     {
         placeZones(wall, positionsStart, positionsAfter, velocitiesAfter);
-        if (!checkPaths(audit, wall, moved, positionsAfter, time))
+        if (!checkPaths(audit, moved, positionsAfter, time))
         {
             countZones(velocitiesAfter);
             return;

@@ -128,6 +128,16 @@ Foam::label Foam::polymer::cloudFunctions::chainStatistics::rodsOutside() const
 }
 
 
+void Foam::polymer::cloudFunctions::chainStatistics::sampleRodError()
+{
+    const polymerChains& chains = cloud_.chains();
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        largestRodError_ = max(largestRodError_, chains.maxRodLengthError(c));
+    }
+}
+
+
 void Foam::polymer::cloudFunctions::chainStatistics::writeLine()
 {
     const polymerChains& chains = cloud_.chains();
@@ -151,7 +161,6 @@ void Foam::polymer::cloudFunctions::chainStatistics::writeLine()
         }
         dof += type.degreesOfFreedom();
         dofKT += type.degreesOfFreedom()*type.kT();
-        rodError = max(rodError, chains.maxRodLengthError(c));
     }
 
     label nChains = chains.nChains();
@@ -234,6 +243,7 @@ Foam::polymer::cloudFunctions::chainStatistics::chainStatistics
     {
         twiceKinetic_ += 2*peculiarKineticEnergy(c);
     }
+    sampleRodError();
     writeLine();
 }
 
@@ -263,11 +273,7 @@ void Foam::polymer::cloudFunctions::chainStatistics::postEvolve()
 {
     // Every step's end, not only the lines': a rod off for a few steps
     // between lines is still reported
-    const polymerChains& chains = cloud_.chains();
-    for (label c = 0; c < chains.nChains(); ++c)
-    {
-        largestRodError_ = max(largestRodError_, chains.maxRodLengthError(c));
-    }
+    sampleRodError();
 
     if (++stepsSinceLine_ >= interval_)
     {

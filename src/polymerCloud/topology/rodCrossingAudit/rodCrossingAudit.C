@@ -342,33 +342,7 @@ Foam::polymer::rodCrossingAudit::check
         }
     };
 
-    // Few rods moving (the re-projection after contacts): each against all
-    labelList moving(rods_.size());
-    label nMoving = 0;
-    forAll(moves, rodi)
-    {
-        if (moves[rodi])
-        {
-            moving[nMoving++] = rodi;
-        }
-    }
-    moving.setSize(nMoving);
-    if (4*nMoving < rods_.size())
-    {
-        for (const label a : moving)
-        {
-            forAll(rods_, b)
-            {
-                if (b != a && !(moves[b] && b < a))
-                {
-                    checkIfNear(a, b);
-                }
-            }
-        }
-        return List<crossing>(std::move(found));
-    }
-
-    // Else a sweep along x: the boxes sorted by their lower x bound
+    // Sweep along x: the boxes sorted by their lower x bound
     labelList order(rods_.size());
     forAll(order, i)
     {

@@ -157,33 +157,19 @@ Foam::scalar Foam::polymer::pairContacts::tolerance
 }
 
 
-Foam::scalar Foam::polymer::pairContacts::earliestCrossing
+Foam::scalar Foam::polymer::pairContacts::followContact
 (
-    const label pairi,
     const rodPairCrossing& pair,
     const crossingRootSolver& rootSolver,
     const scalar T,
+    const scalar W0,
+    const scalar tol,
     label& side,
     bool& atContact
-) const
+)
 {
-    atContact = false;
-    const scalar V0 = pair.tripleProduct(0);
-    const scalar tol = tolerance(pair);
-    side = this->side(pairi);
-
-    // W = side V: positive on the pair's own side. Not at contact (well on
-    // its side, or crossed beyond round-off, when the lines met beyond the
-    // rods earlier in the step): the root solver's
-    if (!side || side*V0 > tol || side*V0 < -1000*tol)
-    {
-        const scalar s = rootSolver.earliestCrossing(pair, T);
-        side = sideBefore(pair, s, (V0 < 0) ? -1 : 1);
-        return s;
-    }
-
-    // At contact: followed until W leaves [min(-2 tol, W(0) - tol), tol]
-    const scalar lower = min(-2*tol, side*V0 - tol);
+    // Followed until W leaves [min(-2 tol, W(0) - tol), tol]
+    const scalar lower = min(-2*tol, W0 - tol);
     scalar inside, outside;
     if (!leaveBand(pair, side, lower, tol, T, inside, outside))
     {
@@ -211,6 +197,44 @@ Foam::scalar Foam::polymer::pairContacts::earliestCrossing
     }
     side = sideBefore(pair, outside + s, side);
     return outside + s;
+}
+
+
+Foam::scalar Foam::polymer::pairContacts::earliestCrossing
+(
+    const label pairi,
+    const rodPairCrossing& pair,
+    const crossingRootSolver& rootSolver,
+    const scalar T,
+    label& side,
+    bool& atContact
+) const
+{
+    atContact = false;
+
+    // W = side V: positive on the pair's own side. A resolved pair at
+    // contact is followed by W; one well on its side, or crossed beyond
+    // round-off (the lines met beyond the rods earlier in the step), and
+    // every unresolved pair (most: no round-off computed for them) is the
+    // root solver's
+    const scalar V0 = pair.tripleProduct(0);
+    side = this->side(pairi);
+    if (side)
+    {
+        const scalar tol = tolerance(pair);
+        const scalar W0 = side*V0;
+        if (W0 <= tol && W0 >= -1000*tol)
+        {
+            return followContact
+            (
+                pair, rootSolver, T, W0, tol, side, atContact
+            );
+        }
+    }
+
+    const scalar s = rootSolver.earliestCrossing(pair, T);
+    side = sideBefore(pair, s, (V0 < 0) ? -1 : 1);
+    return s;
 }
 
 
