@@ -29,6 +29,12 @@ Description
     - for every ring, the knot determinant |Delta(-1)| from a projection
       (1 unknot, 3 trefoil, 5 figure-eight).
 
+    Chains are matched between saves by their ids (the cloud reorders
+    them). On a mesh with cyclic patches every rod is also checked against
+    the other rods' periodic images, and a chain the cloud moved across
+    the patches by a lattice translation between saves is brought back by
+    it first.
+
     Stops with a FatalError (exit status 1) when a crossing is found
     between saves one step apart, or when -knot N is given and a ring's
     determinant differs from N.
@@ -46,6 +52,8 @@ Usage
 #include "polymerCloud.H"
 #include "rodCrossingAudit.H"
 #include "knotDeterminant.H"
+#include "periodicImages.H"
+#include "HashTable.H"
 
 using namespace Foam;
 using namespace Foam::polymer;
@@ -132,6 +140,72 @@ void findRods
     rings.transfer(ringList);
 }
 
+
+//- The current frame's positions in the previous frame's chain order, each
+//  chain brought back by the lattice translation nearest to its first
+//  bead's displacement (the cloud moves a chain whole across the cyclic
+//  patches); false when the two frames do not hold the same chains
+bool alignFrame
+(
+    const frame& previous,
+    const frame& current,
+    const UList<vector>& lattice,
+    List<point>& aligned
+)
+{
+    const label n = previous.positions.size();
+    if (current.positions.size() != n)
+    {
+        return false;
+    }
+
+    // The first bead of each chain of the current frame, by chain id
+    Map<label> firstBead;
+    forAll(current.chainId, i)
+    {
+        if (i == 0 || current.chainId[i] != current.chainId[i - 1])
+        {
+            firstBead.insert(current.chainId[i], i);
+        }
+    }
+
+    aligned.setSize(n);
+    for (label first = 0; first < n; )
+    {
+        const label id = previous.chainId[first];
+        label end = first + 1;
+        while (end < n && previous.chainId[end] == id)
+        {
+            ++end;
+        }
+        const auto found = firstBead.cfind(id);
+        if (!found.found())
+        {
+            return false;
+        }
+        const label from = found.val();
+
+        vector shift(Zero);
+        const vector moved =
+            current.positions[from] - previous.positions[first];
+        for (const vector& t : lattice)
+        {
+            shift += std::round((moved & t)/magSqr(t))*t;
+        }
+        for (label i = first; i < end; ++i)
+        {
+            const label j = from + i - first;
+            if (j >= n || current.chainId[j] != id)
+            {
+                return false;
+            }
+            aligned[i] = current.positions[j] - shift;
+        }
+        first = end;
+    }
+    return true;
+}
+
 } // End anonymous namespace
 
 
@@ -156,6 +230,10 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     #include "createTime.H"
+    #include "createPolyMesh.H"
+
+    // The lattice of the mesh's periodic translations (empty: none)
+    const List<vector>& lattice = periodicImages::New(mesh).lattice();
 
     const word cloudName =
         args.getOrDefault<word>("cloud", "polymerCloud");
@@ -198,20 +276,30 @@ int main(int argc, char *argv[])
         }
 
         autoPtr<frame> current(new frame(readFrame(runTime, cloudName)));
-        if (!previous)
+        // The rods in the previous frame's order (the audit's), the rings
+        // in the current one's
+        List<labelPair> previousRings;
+        if (previous)
         {
-            findRods(current(), types, rods, rings);
+            findRods(previous(), types, rods, previousRings);
         }
+        List<labelPair> currentRods;
+        findRods(current(), types, currentRods, rings);
 
         Info<< "Time " << current->timeName << ':';
 
-        if (previous && previous->positions.size() == current->positions.size())
+        List<point> aligned;
+        if
+        (
+            previous
+         && alignFrame(previous(), current(), lattice, aligned)
+        )
         {
             const List<rodCrossingAudit::crossing> found =
-                rodCrossingAudit(rods).check
+                rodCrossingAudit(rods, lattice).check
                 (
                     previous->positions,
-                    current->positions
+                    aligned
                 );
             const label steps =
                 (current->timeIndex >= 0 && previous->timeIndex >= 0)
@@ -238,7 +326,12 @@ int main(int argc, char *argv[])
                 if (steps == 1)
                 {
                     Info<< nl << "    rods (beads " << c.rodA << ") and ("
-                        << c.rodB << ") at fraction " << c.fraction;
+                        << c.rodB << ")";
+                    if (c.shift != vector::zero)
+                    {
+                        Info<< " translated by " << c.shift;
+                    }
+                    Info<< " at fraction " << c.fraction;
                 }
             }
         }

@@ -8,7 +8,12 @@ Description
     rigid velocities (no relative velocity along any rod, nor between any
     two beads' separation); a straight zone, whose inertia about its axis
     is zero, keeps a rigid motion without NaN; a fraction of the motion is
-    that rigid motion's fraction (rods kept), none of it x^n.
+    that rigid motion's fraction (rods kept), none of it x^n. Across
+    periodic images: merging with a translation keeps every chain's offset
+    consistent whichever the sets' roots, another image of a chain of the
+    same zone is refused, a held zone stays held when merged; a zone placed
+    with its chains' translations is the zone of the translated chains,
+    translated back.
 \*---------------------------------------------------------------------------*/
 
 #include "testHelpers.H"
@@ -280,6 +285,86 @@ TEST(rigidImpactZones, AFractionOfTheMotion)
     {
         EXPECT_LT(mag(chains.positions()[i] - start[i]), 1e-14);
         EXPECT_LT(mag(chains.velocities()[i] - vector(1, 0, 0)), 1e-13);
+    }
+}
+
+
+TEST(rigidImpactZones, ZonesMergeAcrossPeriodicImages)
+{
+    const vector Lx(4, 0, 0), Ly(0, 4, 0);
+    rigidImpactZones zones;
+    zones.reset(5);
+
+    // 0 meets 1's image by Lx; 2 meets 3's image by -Ly; then 3 meets 1's
+    // image by Lx + Ly: 1 is 0's by Lx, 3 is 1's by -(Lx + Ly), so 3 is
+    // 0's by -Ly and 2 is 0's own
+    EXPECT_TRUE(zones.merge(0, 1, Lx));
+    EXPECT_TRUE(zones.merge(2, 3, -Ly));
+    EXPECT_TRUE(zones.merge(3, 1, Lx + Ly));
+    const auto relative = [&](const label a, const label b)
+    {
+        return zones.offset(b) - zones.offset(a);
+    };
+    EXPECT_EQ(relative(0, 1), Lx);
+    EXPECT_EQ(relative(3, 1), Lx + Ly);
+    EXPECT_EQ(relative(2, 3), -Ly);
+    EXPECT_EQ(relative(0, 2), vector::zero);
+
+    // The same images again: consistent; another image: refused
+    EXPECT_TRUE(zones.merge(1, 0, -Lx));
+    EXPECT_TRUE(zones.merge(0, 2, Zero));
+    EXPECT_FALSE(zones.merge(0, 2, Lx));
+
+    // Held zones stay held through merges
+    EXPECT_FALSE(zones.held(0));
+    zones.hold(2);
+    EXPECT_TRUE(zones.held(1));
+    zones.add(4);
+    EXPECT_FALSE(zones.held(4));
+    EXPECT_TRUE(zones.merge(4, 0, Zero));
+    EXPECT_TRUE(zones.held(4));
+    EXPECT_EQ(relative(4, 0), vector::zero);
+}
+
+
+TEST(rigidImpactZones, PlacedWithTranslationsAsTheTranslatedZone)
+{
+    std::mt19937_64 gen(7);
+    const PtrList<chainType> types(twoMasses());
+    polymerChains chains(twoWalks(types, gen));
+    const List<point> start(chains.positions());
+    List<point> after(start.size());
+    List<vector> velocitiesAfter(start.size());
+    forAll(start, i)
+    {
+        after[i] = start[i] + vector(0.2, 0, 0) + gaussian(gen, 0.3);
+        velocitiesAfter[i] = gaussian(gen, 1);
+    }
+
+    // Chain 1 stored one period away: its image by shift is the zone's
+    const vector shift(0, 0, 6);
+    polymerChains apart(chains);
+    List<point> startApart(start), afterApart(after);
+    for (label i = apart.start(1); i < apart.end(1); ++i)
+    {
+        startApart[i] -= shift;
+        afterApart[i] -= shift;
+    }
+
+    rigidImpactZones::place
+    (
+        chains, labelList({0, 1}), 0.7, start, after, velocitiesAfter
+    );
+    rigidImpactZones::place
+    (
+        apart, labelList({0, 1}), 0.7, startApart, afterApart,
+        velocitiesAfter, List<vector>({Zero, shift})
+    );
+    forAll(start, i)
+    {
+        const vector back = (i >= apart.start(1)) ? shift : vector::zero;
+        EXPECT_LT(mag(apart.positions()[i] + back - chains.positions()[i]), 1e-12);
+        EXPECT_LT(mag(apart.velocities()[i] - chains.velocities()[i]), 1e-12);
     }
 }
 

@@ -5,7 +5,10 @@ Description
     - knotDeterminant: unknot 1, trefoil 3, figure-eight 5, for several
       projection directions;
     - rodCrossingAudit: pass-through 1, pass-by 0, touch-and-separate 0,
-      touch-and-continue 1, a contact at the end of a short piece 0.
+      touch-and-continue 1, a contact at the end of a short piece 0; a
+      crossing between periodic images, either way round and two lattice
+      translations apart, is found only with the lattice (once, with its
+      translation), and a rod's own image does not count.
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
@@ -307,6 +310,69 @@ TEST(rodCrossingAudit, ContactAtTheEndOfAShortPieceIsNoCrossing)
 // is in A's way (met at s = 0.75). Without the lattice there is no event;
 // with it one, the dumbbell impulse passes A's momentum to B (equal
 // masses, head-on), and at the end A is still on its side of B's image.
+
+
+// Rod A along y at x = 3.9; rod B along z, moving in +x from x = -0.2 to
+// 0: its image by the lattice's (4 0 0) passes through A. The other way
+// round: A at x = 0.1, B from 4.2 to 4.0 (its image by -(4 0 0) passes).
+// And with the lattice (2 0 0) (0 0 5), B's image two translations apart.
+TEST(rodCrossingAudit, CrossingBetweenImagesFoundWithTheLattice)
+{
+    const List<labelPair> rods({labelPair(0, 1), labelPair(2, 3)});
+    struct imageScene
+    {
+        scalar rodAx, bStart, bEnd;
+        List<vector> lattice;
+        vector shift;
+    };
+    const List<imageScene> scenes
+    ({
+        {3.9, -0.2, 0, List<vector>({vector(4, 0, 0)}), vector(4, 0, 0)},
+        {0.1, 4.2, 4.0, List<vector>({vector(4, 0, 0)}), vector(-4, 0, 0)},
+        {
+            3.9, -0.2, 0,
+            List<vector>({vector(2, 0, 0), vector(0, 0, 5)}),
+            vector(4, 0, 0)
+        }
+    });
+
+    for (const imageScene& sc : scenes)
+    {
+        SCOPED_TRACE("rod A at x = " + Foam::name(sc.rodAx));
+        const List<point> start
+        ({
+            point(sc.rodAx, -0.5, 0), point(sc.rodAx, 0.5, 0),
+            point(sc.bStart, 0, -0.5), point(sc.bStart, 0, 0.5)
+        });
+        List<point> end(start);
+        end[2].x() = sc.bEnd;
+        end[3].x() = sc.bEnd;
+
+        EXPECT_EQ(rodCrossingAudit(rods).check(start, end).size(), 0);
+
+        const List<rodCrossingAudit::crossing> found =
+            rodCrossingAudit(rods, sc.lattice).check(start, end);
+        ASSERT_EQ(found.size(), 1);
+
+        // Reported as one rod and the other's image: A with B + shift, or
+        // B with A - shift
+        const bool aFirst = (found[0].rodA == rods[0]);
+        EXPECT_EQ(found[0].shift, aFirst ? sc.shift : -sc.shift);
+        EXPECT_EQ(found[0].rodB, aFirst ? rods[1] : rods[0]);
+    }
+
+    // A chain longer than the period: rod 0-1 and its translate do not
+    // cross, however far the chain moves
+    const List<labelPair> ownRods({labelPair(0, 1)});
+    const List<point> start({point(0, 0, 0), point(1, 0.2, 0.1)});
+    const List<point> end({point(0.3, 1.5, 0.7), point(1.6, 0.2, 0.2)});
+    EXPECT_EQ
+    (
+        rodCrossingAudit(ownRods, List<vector>({vector(0.9, 0, 0)}))
+       .check(start, end).size(),
+        0
+    );
+}
 
 
 // ************************************************************************* //

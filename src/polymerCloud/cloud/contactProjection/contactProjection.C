@@ -12,6 +12,7 @@ License
 
 #include "contactProjection.H"
 #include "rodCrossingAudit.H"
+#include "rodPairCrossing.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -19,12 +20,21 @@ Foam::polymer::contactProjection::contactProjection
 (
     polymerChains& chains,
     const constraintModel& constraint,
-    const bool uncrossable
+    const bool uncrossable,
+    const UList<vector>& lattice,
+    const bool wallEdges
 )
 :
     chains_(chains),
     constraint_(constraint),
     uncrossable_(uncrossable),
+    lattice_(lattice),
+    wallEdges_(wallEdges),
+    edgeRootSolver_
+    (
+        wallEdges ? crossingRootSolver::New("isolating", dictionary::null)
+      : autoPtr<crossingRootSolver>()
+    ),
     rods_(),
     zones_(),
     reprojected_(0),
@@ -32,6 +42,7 @@ Foam::polymer::contactProjection::contactProjection
     zoneChainSteps_(0),
     stoppedChainSteps_(0),
     heldChainSteps_(0),
+    wrappedChainSteps_(0),
     leftOff_(0),
     zonesFormed_(0),
     energyRemoved_(0),
@@ -81,6 +92,55 @@ bool Foam::polymer::contactProjection::reprojectChain
 }
 
 
+Foam::scalar Foam::polymer::contactProjection::firstEdgeMeeting
+(
+    const wallModel& wall,
+    const labelUList& chainList,
+    const UList<point>& from
+) const
+{
+    const wallEdges& edges = wall.edges();
+    const List<point>& x = chains_.positions();
+    scalar first = GREAT;
+    for (const label c : chainList)
+    {
+        const label start = chains_.start(c);
+        const label end = chains_.end(c);
+        const bool ring = chains_.type(c).ring();
+        for (label i = start; i < (ring ? end : end - 1); ++i)
+        {
+            const label j = (i + 1 < end) ? i + 1 : start;
+
+            // The rod's path at its image inside the mesh
+            const vector shift = wall.imageShift(0.5*(from[i] + from[j]));
+            boundBox box(from[i]);
+            box.add(from[j]);
+            box.add(x[i]);
+            box.add(x[j]);
+            for
+            (
+                const label edgei
+              : edges.near(boundBox(box.min() + shift, box.max() + shift))
+            )
+            {
+                const rodPairCrossing pair
+                (
+                    from[i] + shift, from[j] + shift,
+                    edges.start(edgei), edges.end(edgei),
+                    x[i] - from[i], x[j] - from[j], Zero, Zero
+                );
+                const scalar s = edgeRootSolver_->earliestCrossing(pair, 1);
+                if (s >= 0)
+                {
+                    first = min(first, s);
+                }
+            }
+        }
+    }
+    return first;
+}
+
+
 Foam::scalar Foam::polymer::contactProjection::firstWallMeeting
 (
     const wallModel& wall,
@@ -89,7 +149,10 @@ Foam::scalar Foam::polymer::contactProjection::firstWallMeeting
 ) const
 {
     const List<point>& x = chains_.positions();
-    scalar first = GREAT;
+    scalar first =
+        (wallEdges_ && wall.edges().size())
+      ? firstEdgeMeeting(wall, chainList, from)
+      : GREAT;
     wallModel::impact hit;
     for (const label c : chainList)
     {
@@ -156,11 +219,12 @@ bool Foam::polymer::contactProjection::checkPaths
     {
         const label a = chains_.chainOf(crossing.rodA.first());
         const label b = chains_.chainOf(crossing.rodB.first());
-        if (zones_.sameZone(a, b))
-        {
-            continue;
-        }
-        if (!moved[a] && !moved[b] && !zones_.inZone(a) && !zones_.inZone(b))
+        const bool sameZone = zones_.sameZone(a, b);
+        if
+        (
+            !sameZone
+         && !moved[a] && !moved[b] && !zones_.inZone(a) && !zones_.inZone(b)
+        )
         {
             WarningInFunction
                 << "Audit: rods (beads " << crossing.rodA << ") and ("
@@ -169,8 +233,20 @@ bool Foam::polymer::contactProjection::checkPaths
             ++crossingsLeft_;
             continue;
         }
-        zones_.merge(a, b);
-        changed = true;
+        if (!zones_.merge(a, b, crossing.shift))
+        {
+            // A zone is rigid with one image of each of its chains only: a
+            // zone that meets another image of its own chain (it wraps
+            // around the period) is held at the step's start, where its
+            // chains' images do not move relative to each other
+            if (!zones_.held(a))
+            {
+                zones_.hold(a);
+                changed = true;
+            }
+            continue;
+        }
+        changed = changed || !sameZone;
     }
     return changed;
 }
@@ -205,12 +281,14 @@ void Foam::polymer::contactProjection::countZones
     const List<vector>& v = chains_.velocities();
     forAll(placed_, z)
     {
+        const bool wrapped = zones_.held(placed_[z][0]);
         ++zonesFormed_;
         for (const label c : placed_[z])
         {
             ++zoneChainSteps_;
-            stoppedChainSteps_ += (fractions_[z] < 1);
+            stoppedChainSteps_ += (fractions_[z] < 1 && !wrapped);
             heldChainSteps_ += (fractions_[z] == 0);
+            wrappedChainSteps_ += wrapped;
             const scalar m = chains_.type(c).beadMass();
             for (label i = chains_.start(c); i < chains_.end(c); ++i)
             {
@@ -225,13 +303,14 @@ void Foam::polymer::contactProjection::countZones
 Foam::scalar Foam::polymer::contactProjection::placeZone
 (
     const labelList& zone,
+    const UList<vector>& offsets,
     const wallModel* wall,
     const UList<point>& positionsStart,
     const UList<point>& positionsAfter,
     const UList<vector>& velocitiesAfter
 )
 {
-    scalar fraction = 1;
+    scalar fraction = zones_.held(zone[0]) ? 0 : 1;
     for (label attempt = 0; attempt <= 5; ++attempt)
     {
         if (attempt == 5)
@@ -241,7 +320,7 @@ Foam::scalar Foam::polymer::contactProjection::placeZone
         rigidImpactZones::place
         (
             chains_, zone, fraction,
-            positionsStart, positionsAfter, velocitiesAfter
+            positionsStart, positionsAfter, velocitiesAfter, offsets
         );
         if (!fraction || !wall || !wall->active())
         {
@@ -269,12 +348,27 @@ void Foam::polymer::contactProjection::placeZones
 )
 {
     placed_ = zones_.zones(chains_);
+    placedOffsets_.setSize(placed_.size());
     fractions_.setSize(placed_.size());
     forAll(placed_, z)
     {
+        // Translations relative to the zone's first chain by global id,
+        // whichever chain the sets' tree has at its root
+        List<vector>& offsets = placedOffsets_[z];
+        offsets.clear();
+        if (lattice_.size())
+        {
+            const labelList& zone = placed_[z];
+            offsets.setSize(zone.size());
+            forAll(zone, k)
+            {
+                offsets[k] = zones_.offset(zone[k]) - zones_.offset(zone[0]);
+            }
+        }
         fractions_[z] = placeZone
         (
-            placed_[z], wall, positionsStart, positionsAfter, velocitiesAfter
+            placed_[z], offsets, wall,
+            positionsStart, positionsAfter, velocitiesAfter
         );
     }
 }
@@ -329,7 +423,7 @@ void Foam::polymer::contactProjection::correct
     addWallZones(wall, moved, positionsAfter);
 
     rods_.update(chains_);
-    const rodCrossingAudit audit(rods_.rods());
+    const rodCrossingAudit audit(rods_.rods(), lattice_);
     const label maxPasses = 3*chains_.nChains() + 2;
     for (label pass = 0; pass < maxPasses; ++pass)
     {
@@ -368,6 +462,8 @@ void Foam::polymer::contactProjection::writeReport(Ostream& os) const
         << returnReduce(scalar(leftOff_), sumOp<scalar>())
         << ", crossings left "
         << returnReduce(scalar(crossingsLeft_), sumOp<scalar>())
+        << "; chain-steps held for a zone wrapping around the period "
+        << returnReduce(scalar(wrappedChainSteps_), sumOp<scalar>())
         << nl;
 }
 

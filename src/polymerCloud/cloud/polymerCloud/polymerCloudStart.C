@@ -267,7 +267,11 @@ void Foam::polymer::polymerCloud::selectModels(const dictionary& subModels)
         (
             new contactProjection
             (
-                chains_, constraint_(), collision_->uncrossable()
+                chains_,
+                constraint_(),
+                collision_->uncrossable(),
+                periodic_.lattice(),
+                collision_->meetsWallEdges()
             )
         );
     }

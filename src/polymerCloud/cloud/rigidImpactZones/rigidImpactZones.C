@@ -80,14 +80,19 @@ Eigen::Vector3d angularVelocity
 Foam::label Foam::polymer::rigidImpactZones::root(const label chaini)
 {
     label r = chaini;
+    vector total(Zero);
     while (parent_[r] != r)
     {
+        total += offset_[r];
         r = parent_[r];
     }
-    for (label c = chaini; parent_[c] != r; )
+    for (label c = chaini; c != r; )
     {
         const label next = parent_[c];
+        const vector own = offset_[c];
         parent_[c] = r;
+        offset_[c] = total;
+        total -= own;
         c = next;
     }
     return r;
@@ -102,6 +107,10 @@ void Foam::polymer::rigidImpactZones::reset(const label nChains)
     parent_ = -1;
     size_.setSize(nChains);
     size_ = 0;
+    offset_.setSize(nChains);
+    offset_ = Zero;
+    held_.setSize(nChains);
+    held_ = false;
 }
 
 
@@ -121,30 +130,67 @@ void Foam::polymer::rigidImpactZones::add(const label chaini)
     {
         parent_[chaini] = chaini;
         size_[chaini] = 1;
+        offset_[chaini] = Zero;
+        held_[chaini] = false;
     }
 }
 
 
-void Foam::polymer::rigidImpactZones::merge
+void Foam::polymer::rigidImpactZones::hold(const label chaini)
+{
+    held_[root(chaini)] = true;
+}
+
+
+bool Foam::polymer::rigidImpactZones::held(const label chaini)
+{
+    return inZone(chaini) && held_[root(chaini)];
+}
+
+
+Foam::vector Foam::polymer::rigidImpactZones::offset(const label chaini)
+{
+    return (root(chaini) == chaini) ? vector::zero : offset_[chaini];
+}
+
+
+bool Foam::polymer::rigidImpactZones::merge
 (
     const label chainA,
-    const label chainB
+    const label chainB,
+    const vector& shift
 )
 {
     add(chainA);
     add(chainB);
-    label a = root(chainA);
-    label b = root(chainB);
+    const label a = root(chainA);
+    const label b = root(chainB);
+    const vector offsetA = offset(chainA);
+    const vector offsetB = offset(chainB);
+
+    // B's image by shift sits beside A: offset(B) = offset(A) + shift
+    const vector mismatch = offsetA + shift - offsetB;
     if (a == b)
     {
-        return;
+        // Lattice translations differ by a whole lattice vector or not at
+        // all: round-off of their sums is far below this
+        return magSqr(mismatch) <= 1e-12*(1 + magSqr(offsetA) + magSqr(shift));
     }
     if (size_[a] < size_[b])
     {
-        std::swap(a, b);
+        parent_[a] = b;
+        offset_[a] = -mismatch;
+        size_[b] += size_[a];
+        held_[b] = held_[b] || held_[a];
     }
-    parent_[b] = a;
-    size_[a] += size_[b];
+    else
+    {
+        parent_[b] = a;
+        offset_[b] = mismatch;
+        size_[a] += size_[b];
+        held_[a] = held_[a] || held_[b];
+    }
+    return true;
 }
 
 
@@ -206,25 +252,32 @@ void Foam::polymer::rigidImpactZones::place
     const scalar fraction,
     const UList<point>& positionsStart,
     const UList<point>& positionsAfter,
-    const UList<vector>& velocitiesAfter
+    const UList<vector>& velocitiesAfter,
+    const UList<vector>& offsets
 )
 {
     List<point>& x = chains.positions();
     List<vector>& v = chains.velocities();
+    const auto offsetOf = [&](const label k)
+    {
+        return offsets.empty() ? vector::zero : offsets[k];
+    };
 
     // Centres of mass at the start and after the contacts, mean velocity
     scalar mass = 0;
     vector centreStart(Zero);
     vector centreAfter(Zero);
     vector momentum(Zero);
-    for (const label c : zoneChains)
+    forAll(zoneChains, k)
     {
+        const label c = zoneChains[k];
+        const vector shift = offsetOf(k);
         const scalar m = chains.type(c).beadMass();
         for (label i = chains.start(c); i < chains.end(c); ++i)
         {
             mass += m;
-            centreStart += m*positionsStart[i];
-            centreAfter += m*positionsAfter[i];
+            centreStart += m*(positionsStart[i] + shift);
+            centreAfter += m*(positionsAfter[i] + shift);
             momentum += m*velocitiesAfter[i];
         }
     }
@@ -238,14 +291,17 @@ void Foam::polymer::rigidImpactZones::place
     // centre of mass
     Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
     Eigen::Vector3d angularMomentum = Eigen::Vector3d::Zero();
-    for (const label c : zoneChains)
+    forAll(zoneChains, k)
     {
+        const label c = zoneChains[k];
+        const vector shift = offsetOf(k);
         const scalar m = chains.type(c).beadMass();
         for (label i = chains.start(c); i < chains.end(c); ++i)
         {
-            const Eigen::Vector3d q = toEigen(positionsAfter[i] - centreAfter);
-            covariance +=
-                m*q*toEigen(positionsStart[i] - centreStart).transpose();
+            const Eigen::Vector3d q =
+                toEigen(positionsAfter[i] + shift - centreAfter);
+            covariance += m*q
+               *toEigen(positionsStart[i] + shift - centreStart).transpose();
             angularMomentum +=
                 m*q.cross(toEigen(velocitiesAfter[i] - meanVelocity));
         }
@@ -259,14 +315,16 @@ void Foam::polymer::rigidImpactZones::place
     }
 
     Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
-    for (const label c : zoneChains)
+    forAll(zoneChains, k)
     {
+        const label c = zoneChains[k];
+        const vector shift = offsetOf(k);
         const scalar m = chains.type(c).beadMass();
         for (label i = chains.start(c); i < chains.end(c); ++i)
         {
             const Eigen::Vector3d s =
-                R*toEigen(positionsStart[i] - centreStart);
-            x[i] = centre + fromEigen(s);
+                R*toEigen(positionsStart[i] + shift - centreStart);
+            x[i] = centre + fromEigen(s) - shift;
             inertia += m*(s.squaredNorm()*Eigen::Matrix3d::Identity()
                 - s*s.transpose());
         }
@@ -274,11 +332,13 @@ void Foam::polymer::rigidImpactZones::place
 
     const vector omega =
         fromEigen(angularVelocity(inertia, angularMomentum));
-    for (const label c : zoneChains)
+    forAll(zoneChains, k)
     {
+        const label c = zoneChains[k];
+        const vector shift = offsetOf(k);
         for (label i = chains.start(c); i < chains.end(c); ++i)
         {
-            v[i] = meanVelocity + (omega ^ (x[i] - centre));
+            v[i] = meanVelocity + (omega ^ (x[i] + shift - centre));
         }
     }
 }

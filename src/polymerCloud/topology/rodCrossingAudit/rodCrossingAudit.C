@@ -61,10 +61,46 @@ inline vec at(const vec& a, const vec& b, const real t)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::polymer::rodCrossingAudit::rodCrossingAudit(const List<labelPair>& rods)
+Foam::polymer::rodCrossingAudit::rodCrossingAudit
+(
+    const List<labelPair>& rods,
+    const UList<vector>& lattice
+)
 :
-    rods_(rods)
-{}
+    rods_(rods),
+    shifts_()
+{
+    // Every combination of -2..2 of each lattice vector whose first
+    // non-zero coefficient is positive: each image pair once
+    DynamicList<vector> shifts;
+    List<label> coefficient(lattice.size(), -2);
+    label nCombinations = 1;
+    for (label k = 0; k < lattice.size(); ++k)
+    {
+        nCombinations *= 5;
+    }
+    for (label combination = 0; combination < nCombinations; ++combination)
+    {
+        label code = combination;
+        vector shift(Zero);
+        label firstNonZero = 0;
+        for (label k = 0; k < lattice.size(); ++k)
+        {
+            coefficient[k] = code % 5 - 2;
+            code /= 5;
+            shift += coefficient[k]*lattice[k];
+            if (!firstNonZero)
+            {
+                firstNonZero = coefficient[k];
+            }
+        }
+        if (firstNonZero > 0)
+        {
+            shifts.append(shift);
+        }
+    }
+    shifts_.transfer(shifts);
+}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -208,6 +244,7 @@ void Foam::polymer::rodCrossingAudit::checkPair
 (
     const labelPair& a,
     const labelPair& b,
+    const vector& shift,
     const UList<List<point>>& path,
     DynamicList<crossing>& found
 ) const
@@ -223,8 +260,9 @@ void Foam::polymer::rodCrossingAudit::checkPair
         pairPiece piece;
         for (int m = 0; m < 4; ++m)
         {
-            piece.p0[m] = toVec(path[k][beads[m]]);
-            piece.p1[m] = toVec(path[k + 1][beads[m]]);
+            const vector& image = (m < 2) ? vector::zero : shift;
+            piece.p0[m] = toVec(path[k][beads[m]] + image);
+            piece.p1[m] = toVec(path[k + 1][beads[m]] + image);
         }
         const real tolerance = piece.roundOff();
         const real start = piece.value(0);
@@ -236,7 +274,7 @@ void Foam::polymer::rodCrossingAudit::checkPair
             const int sign = start < 0 ? -1 : 1;
             if (lastSign && sign != lastSign && piece.meetWithinRods(0))
             {
-                found.append(crossing{a, b, k, 0});
+                found.append(crossing{a, b, k, 0, shift});
             }
             lastSign = sign;
         }
@@ -267,7 +305,7 @@ void Foam::polymer::rodCrossingAudit::checkPair
                 {
                     found.append
                     (
-                        crossing{a, b, k, scalar(root.first)}
+                        crossing{a, b, k, scalar(root.first), shift}
                     );
                 }
             }
@@ -282,7 +320,7 @@ void Foam::polymer::rodCrossingAudit::checkPair
             const real at = (contact >= 0) ? contact : 0;
             if (lastSign && sign != lastSign && piece.meetWithinRods(at))
             {
-                found.append(crossing{a, b, k, scalar(at)});
+                found.append(crossing{a, b, k, scalar(at), shift});
             }
             lastSign = sign;
         }
@@ -338,7 +376,7 @@ Foam::polymer::rodCrossingAudit::check
          && boxes[a].overlaps(boxes[b])
         )
         {
-            checkPair(ra, rb, path, found);
+            checkPair(ra, rb, vector::zero, path, found);
         }
     };
 
@@ -371,7 +409,70 @@ Foam::polymer::rodCrossingAudit::check
             checkIfNear(a, b);
         }
     }
+
+    // The images, where the rods' box meets its translate
+    boundBox all(boxes.size() ? boxes[0] : boundBox());
+    for (const boundBox& box : boxes)
+    {
+        all.add(box);
+    }
+    for (const vector& shift : shifts_)
+    {
+        if (all.overlaps(boundBox(all.min() + shift, all.max() + shift)))
+        {
+            checkImages(shift, boxes, moves, order, path, found);
+        }
+    }
     return List<crossing>(std::move(found));
+}
+
+
+void Foam::polymer::rodCrossingAudit::checkImages
+(
+    const vector& shift,
+    const UList<boundBox>& boxes,
+    const boolList& moves,
+    const labelUList& order,
+    const UList<List<point>>& path,
+    DynamicList<crossing>& found
+) const
+{
+    // The boxes' lower x bounds in sweep order, and their widest x extent
+    scalarList lowerX(order.size());
+    scalar width = 0;
+    forAll(order, oi)
+    {
+        lowerX[oi] = boxes[order[oi]].min().x();
+        width = max(width, boxes[order[oi]].span().x());
+    }
+
+    // Every ordered pair (a, image of b): (b, image of a by -shift) is the
+    // same pair, and -shift is not listed. A rod's own image is its
+    // translate, parallel to it: it cannot cross it.
+    forAll(rods_, a)
+    {
+        const boundBox& boxA = boxes[a];
+        const label first = std::lower_bound
+        (
+            lowerX.begin(), lowerX.end(), boxA.min().x() - width - shift.x()
+        ) - lowerX.begin();
+        for (label oj = first; oj < order.size(); ++oj)
+        {
+            if (lowerX[oj] + shift.x() > boxA.max().x())
+            {
+                break;
+            }
+            const label b = order[oj];
+            const boundBox imageB
+            (
+                boxes[b].min() + shift, boxes[b].max() + shift
+            );
+            if (b != a && (moves[a] || moves[b]) && boxA.overlaps(imageB))
+            {
+                checkPair(rods_[a], rods_[b], shift, path, found);
+            }
+        }
+    }
 }
 
 

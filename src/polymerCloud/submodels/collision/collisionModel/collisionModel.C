@@ -28,6 +28,7 @@ void Foam::polymer::collisionModel::writeReport(Ostream& os) const
         << " (max per step " << total.maxEventsPerStep
         << "), event-loop stalls " << total.stalls
         << ", crossing-time solves " << total.pairChecks
+        << ", rod-edge contacts " << total.edgeContacts
         << ", unresolved events " << total.unresolved
         << ", audited crossings " << total.auditCrossings << nl;
 }

@@ -74,6 +74,7 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
             coeffDict_, "impulse", impulseTypeNames, impulseType::constrained
         )
     ),
+    wallEdges_(coeffDict_.getOrDefault<bool>("wallEdges", true)),
     rods_(),
     position_(),
     velocity_(),
@@ -81,11 +82,15 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     grid_(),
     queue_(),
     contacts_(),
+    edgePairs_(),
+    edgePairIndex_(),
+    edgeContacts_(),
     snapshots_(),
     wall_(nullptr),
     projection_(),
     changedBeads_(),
-    frozenChains_()
+    frozenChains_(),
+    heldChains_()
 {}
 
 
@@ -190,6 +195,81 @@ void Foam::polymer::collisionModels::elasticRods::predictWall
 }
 
 
+Foam::label Foam::polymer::collisionModels::elasticRods::edgePair
+(
+    const label rod,
+    const label edgei
+)
+{
+    const labelPair key(rod, edgei);
+    const auto found = edgePairIndex_.cfind(key);
+    if (found.found())
+    {
+        return found.val();
+    }
+    const label index = edgePairs_.size();
+    edgePairs_.append(key);
+    edgePairIndex_.insert(key, index);
+    return index;
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::predictEdges
+(
+    const label rod,
+    const scalar t,
+    const scalar dt
+)
+{
+    const wallEdges& edges = wall_->edges();
+    const label a0 = rods_[rod].first();
+    const label a1 = rods_[rod].second();
+    const point p0 = positionAt(a0, t);
+    const point p1 = positionAt(a1, t);
+
+    // The rod at its image inside the mesh, where the edges are
+    const vector shift = wall_->imageShift(0.5*(p0 + p1));
+    const boundBox box = sweep(rod, t, dt);
+    for
+    (
+        const label edgei
+      : edges.near(boundBox(box.min() + shift, box.max() + shift))
+    )
+    {
+        const rodPairCrossing pair
+        (
+            p0 + shift, p1 + shift, edges.start(edgei), edges.end(edgei),
+            velocity_[a0], velocity_[a1], Zero, Zero
+        );
+        const label pairi = edgePair(rod, edgei);
+        label side = 0;
+        bool atContact = false;
+        const scalar s = edgeContacts_.earliestCrossing
+        (
+            pairi, pair, *rootSolver_, dt - t, side, atContact
+        );
+        ++counters_.pairChecks;
+        if (s < 0)
+        {
+            continue;
+        }
+
+        event e;
+        e.time = t + s;
+        e.pair = pairi;
+        e.from = t;
+        e.offset = s;
+        e.normal = shift;   // the rod's image translation
+        e.patch = edges.patch(edgei);
+        e.side = side;
+        e.atContact = atContact;
+        e.edge = true;
+        e.beads = FixedList<label, 4>({a0, a1, -1, -1});
+        queue_.push(e);
+    }
+}
+
+
 void Foam::polymer::collisionModels::elasticRods::repredict
 (
     const label bead,
@@ -208,6 +288,10 @@ void Foam::polymer::collisionModels::elasticRods::repredict
         for (const label pairi : grid_.rodPairs(rod))
         {
             predict(pairi, t, dt);
+        }
+        if (wall_ && wallEdges_ && wall_->edges().size())
+        {
+            predictEdges(rod, t, dt);
         }
     }
 
@@ -259,6 +343,61 @@ void Foam::polymer::collisionModels::elasticRods::resolveWall
 }
 
 
+void Foam::polymer::collisionModels::elasticRods::holdChain
+(
+    const polymerChains& chains,
+    const label chaini,
+    const scalar t,
+    const scalar dt
+)
+{
+    if (heldChains_.found(chaini))
+    {
+        return;
+    }
+    heldChains_.append(chaini);
+
+    const label first = chains.start(chaini);
+    const label end = chains.end(chaini);
+    for (label i = first; i < end; ++i)
+    {
+        position_[i] = positionAt(i, t);
+        beadTime_[i] = t;
+        velocity_[i] = Zero;
+        queue_.changedCourse(i);
+    }
+
+    // The chain's rods have new (null) paths: the moving chains' events
+    // with them are predicted again; a held bead meets no wall
+    for (label i = first; i < end; ++i)
+    {
+        repredict(i, t, dt);
+    }
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::holdStalled
+(
+    const polymerChains& chains,
+    const event& e,
+    const scalar dt
+)
+{
+    if (e.pair < 0)
+    {
+        holdChain(chains, chains.chainOf(-1 - e.pair), e.time, dt);
+        return;
+    }
+    if (e.edge)
+    {
+        holdChain(chains, chains.chainOf(e.beads[0]), e.time, dt);
+        return;
+    }
+    holdChain(chains, chains.chainOf(e.beads[0]), e.time, dt);
+    holdChain(chains, chains.chainOf(e.beads[2]), e.time, dt);
+}
+
+
 void Foam::polymer::collisionModels::elasticRods::snapshot(const scalar t)
 {
     List<point> positions(position_.size());
@@ -276,13 +415,15 @@ Foam::label Foam::polymer::collisionModels::elasticRods::auditStep
 )
 {
     const List<rodCrossingAudit::crossing> found =
-        rodCrossingAudit(rods_.rods()).check(snapshots_);
+        rodCrossingAudit(rods_.rods(), lattice_).check(snapshots_);
 
     for (const rodCrossingAudit::crossing& c : found)
     {
         WarningInFunction
             << "Audit: rods (beads " << c.rodA << ") and (" << c.rodB
-            << ") crossed in the step to time " << time
+            << (c.shift == vector::zero ? ")" : ") translated by ")
+            << (c.shift == vector::zero ? "" : Foam::name(c.shift))
+            << " crossed in the step to time " << time
             << ", after event " << c.piece << " of the step" << endl;
     }
     const label nFound = found.size();
@@ -295,36 +436,64 @@ Foam::label Foam::polymer::collisionModels::elasticRods::auditStep
 void Foam::polymer::collisionModels::elasticRods::reportStall
 (
     const polymerChains& chains,
-    const label pairi,
+    const event& e,
     const scalar time,
     const label nEvents
 ) const
 {
+    const label pairi = e.pair;
+    const bool runaway = nEvents >= maxEvents_;
+    const char* held =
+        runaway
+      ? ": every bead stays at the last uncrossed state of the step"
+      : ": held at their last uncrossed state for the rest of the step,"
+        " the other chains go on";
+
     if (pairi < 0)
     {
         WarningInFunction
-            << "Event loop stopped at time " << time << " after " << nEvents
-            << " events, the last a bead-wall impact of bead " << -1 - pairi
-            << ": the beads stay at the last uncrossed state of the step"
+            << "Event loop " << (runaway ? "stopped" : "stalled")
+            << " at time " << time << " after " << nEvents
+            << " events, at a bead-wall impact of bead " << -1 - pairi
+            << " of chain " << chains.globalId(chains.chainOf(-1 - pairi))
+            << (runaway ? " (maxEvents)" : " (tau -> 0 stall)") << held
             << endl;
         return;
     }
 
+    if (e.edge)
+    {
+        WarningInFunction
+            << "Event loop " << (runaway ? "stopped" : "stalled")
+            << " at time " << time << " after " << nEvents
+            << " events, at a rod-edge contact of beads " << e.beads[0]
+            << ' ' << e.beads[1] << " of chain "
+            << chains.globalId(chains.chainOf(e.beads[0]))
+            << (
+                   runaway ? " (maxEvents)"
+                 : edgeContacts_.contactStreak(pairi) >= stallEvents_
+                 ? " (resolved stallEvents times in a row at its contact)"
+                 : " (tau -> 0 stall)"
+               )
+            << held << endl;
+        return;
+    }
+
     WarningInFunction
-        << "Rod-rod event loop stopped at time " << time << " after "
-        << nEvents << " events, the last between chains "
+        << "Rod-rod event loop " << (runaway ? "stopped" : "stalled")
+        << " at time " << time << " after "
+        << nEvents << " events, at one between chains "
         << chains.globalId(rods_.chain(grid_.pairs()[pairi].first()))
         << " and "
         << chains.globalId(rods_.chain(grid_.pairs()[pairi].second()))
         << (
-               nEvents >= maxEvents_ ? " (maxEvents)"
+               runaway ? " (maxEvents)"
              : contacts_.contactStreak(pairi) >= stallEvents_
              ? " (the pair resolved stallEvents times in a row at its"
                " contact: a grazing contact its impulses do not separate)"
              : " (tau -> 0 stall)"
            )
-        << ": the beads stay at the last uncrossed state of the step"
-        << endl;
+        << held << endl;
 }
 
 
@@ -341,6 +510,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
 {
     wall_ = (wall && wall->active()) ? wall : nullptr;
     frozenChains_.clear();
+    heldChains_.clear();
 
     const label nBeads = chains.nBeads();
     List<vector>& x = chains.positions();
@@ -368,6 +538,9 @@ void Foam::polymer::collisionModels::elasticRods::correct
 
     queue_.reset(nBeads);
     contacts_.clear();
+    edgeContacts_.clear();
+    edgePairs_.clear();
+    edgePairIndex_.clear();
     forAll(grid_.pairs(), pairi)
     {
         predict(pairi, 0, deltaT);
@@ -377,6 +550,13 @@ void Foam::polymer::collisionModels::elasticRods::correct
         for (label bead = 0; bead < nBeads; ++bead)
         {
             predictWall(bead, 0, deltaT);
+        }
+        if (wallEdges_ && wall_->edges().size())
+        {
+            forAll(rods_.rods(), rod)
+            {
+                predictEdges(rod, 0, deltaT);
+            }
         }
     }
 
@@ -391,7 +571,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
     label nWallEvents = 0;
     label nShort = 0;
     scalar now = 0;
-    bool stalled = false;
+    bool runaway = false;
 
     event e;
     while (queue_.next(e))
@@ -401,24 +581,50 @@ void Foam::polymer::collisionModels::elasticRods::correct
         nShort = (e.time - now < stallTime_*deltaT) ? nShort + 1 : 0;
         now = e.time;
 
+        runaway = (nEvents + nWallEvents >= maxEvents_);
+        const pairContacts& followed = e.edge ? edgeContacts_ : contacts_;
         if
         (
-            nShort >= stallEvents_
-         || nEvents + nWallEvents >= maxEvents_
-         || (!wallEvent && contacts_.contactStreak(e.pair) >= stallEvents_)
+            runaway
+         || nShort >= stallEvents_
+         || (!wallEvent && followed.contactStreak(e.pair) >= stallEvents_)
         )
         {
             reportStall
             (
-                chains, e.pair, time - deltaT + now, nEvents + nWallEvents
+                chains, e, time - deltaT + now, nEvents + nWallEvents
             );
-            stalled = true;
-            break;
+            ++counters_.stalls;
+            if (runaway)
+            {
+                break;
+            }
+            holdStalled(chains, e, deltaT);
+            nShort = 0;
+            continue;
         }
 
         if (audit_)
         {
             snapshot(now);
+        }
+
+        if (e.edge)
+        {
+            ++nWallEvents;
+            if (resolveEdge(e, chains, vDagger))
+            {
+                ++counters_.edgeContacts;
+                for (const label bead : changedBeads_)
+                {
+                    repredict(bead, now, deltaT);
+                }
+            }
+            else
+            {
+                ++counters_.unresolved;
+            }
+            continue;
         }
 
         if (wallEvent)
@@ -466,8 +672,9 @@ void Foam::polymer::collisionModels::elasticRods::correct
         }
     }
 
-    // x^{n+1}: the end of the paths, or the last uncrossed state
-    const scalar end = stalled ? now : deltaT;
+    // x^{n+1}: the end of the paths (held chains stay where they were
+    // held), or the last uncrossed state of a runaway loop
+    const scalar end = runaway ? now : deltaT;
     for (label i = 0; i < nBeads; ++i)
     {
         x[i] = positionAt(i, end);
@@ -482,7 +689,6 @@ void Foam::polymer::collisionModels::elasticRods::correct
     ++counters_.steps;
     counters_.events += nEvents;
     counters_.maxEventsPerStep = max(counters_.maxEventsPerStep, nEvents);
-    counters_.stalls += stalled;
 }
 
 

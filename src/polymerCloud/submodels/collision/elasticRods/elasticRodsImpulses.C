@@ -120,15 +120,25 @@ bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
     {
         return false;
     }
-    List<vector> responseI, responseJ;
+
+    // A chain held by a stall is an immovable obstacle: no response
+    const bool heldI = heldChains_.found(chainI);
+    const bool heldJ = heldChains_.found(chainJ);
+    List<vector> responseI(chains.size(chainI), Zero);
+    List<vector> responseJ(chains.size(chainJ), Zero);
     if
     (
-        !chainResponse
-        (
-            chains, chainI, fourBeads, weights, n, e.time, responseI
+        (heldI && heldJ)
+     || (
+            !heldI
+         && !chainResponse
+            (
+                chains, chainI, fourBeads, weights, n, e.time, responseI
+            )
         )
      || (
             chainJ != chainI
+         && !heldJ
          && !chainResponse
             (
                 chains, chainJ, fourBeads, weights, n, e.time, responseJ
@@ -149,7 +159,10 @@ bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
         const List<vector>& r = (c == chainI) ? responseI : responseJ;
         u += weights[k]*(velocity_[beads[k]] & n);
         contactResponse += weights[k]*(r[beads[k] - chains.start(c)] & n);
-        freeResponse += sqr(weights[k])/chains.type(c).beadMass();
+        if (c == chainI ? !heldI : !heldJ)
+        {
+            freeResponse += sqr(weights[k])/chains.type(c).beadMass();
+        }
     }
     if (contactResponse <= 1e-8*freeResponse)
     {
@@ -158,8 +171,11 @@ bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
 
     const scalar J = -2*u/contactResponse;
     changedBeads_.clear();
-    applyResponse(chains, chainI, J, responseI, velocitiesDagger);
-    if (chainJ != chainI)
+    if (!heldI)
+    {
+        applyResponse(chains, chainI, J, responseI, velocitiesDagger);
+    }
+    if (chainJ != chainI && !heldJ)
     {
         applyResponse(chains, chainJ, J, responseJ, velocitiesDagger);
     }
@@ -243,15 +259,21 @@ bool Foam::polymer::collisionModels::elasticRods::resolve
         velocity_[beads[2]], velocity_[beads[3]]
     );
 
+    // A chain held by a stall takes the impulse as an infinite mass
+    const label chainI = chains.chainOf(beads[0]);
+    const label chainJ = chains.chainOf(beads[2]);
+    const bool heldI = heldChains_.found(chainI);
+    const bool heldJ = heldChains_.found(chainJ);
     FixedList<vector, 4> after;
     if
     (
-        !pair.elasticImpulse
+        (heldI && heldJ)
+     || !pair.elasticImpulse
         (
             0,
             after,
-            chains.type(chains.chainOf(beads[0])).beadMass(),
-            chains.type(chains.chainOf(beads[2])).beadMass()
+            heldI ? VGREAT : chains.type(chainI).beadMass(),
+            heldJ ? VGREAT : chains.type(chainJ).beadMass()
         )
     )
     {
@@ -261,6 +283,10 @@ bool Foam::polymer::collisionModels::elasticRods::resolve
     for (label k = 0; k < 4; ++k)
     {
         const label bead = beads[k];
+        if (k < 2 ? heldI : heldJ)
+        {
+            continue;
+        }
         velocitiesDagger[bead] += after[k] - velocity_[bead];
         velocity_[bead] = after[k];
         queue_.changedCourse(bead);
@@ -277,6 +303,85 @@ bool Foam::polymer::collisionModels::elasticRods::resolve
         changedBeads_.append(rods_[rod].second());
     }
 
+    return true;
+}
+
+
+bool Foam::polymer::collisionModels::elasticRods::resolveEdge
+(
+    const event& e,
+    const polymerChains& chains,
+    UList<vector>& velocitiesDagger
+)
+{
+    const label b0 = e.beads[0];
+    const label b1 = e.beads[1];
+    for (const label bead : {b0, b1})
+    {
+        position_[bead] =
+            positionAt(bead, e.from) + e.offset*velocity_[bead];
+        beadTime_[bead] = e.time;
+    }
+
+    // The rod at its image (e.normal holds its translation) and the edge
+    const wallEdges& edges = wall_->edges();
+    const label edgei = edgePairs_[e.pair].second();
+    const vector& shift = e.normal;
+    const rodPairCrossing pair
+    (
+        position_[b0] + shift, position_[b1] + shift,
+        edges.start(edgei), edges.end(edgei),
+        velocity_[b0], velocity_[b1], Zero, Zero
+    );
+    scalar lambda, mu;
+    vector n;
+    if (!pair.contact(0, lambda, mu, n))
+    {
+        return false;
+    }
+
+    // The contact's normal velocity reverses (the edge does not move)
+    const scalar u = ((1 - lambda)*velocity_[b0] + lambda*velocity_[b1]) & n;
+    const label c = chains.chainOf(b0);
+    const scalar mass = chains.type(c).beadMass();
+    const scalar freeResponse = (sqr(1 - lambda) + sqr(lambda))/mass;
+    changedBeads_.clear();
+    edgeContacts_.record(e.pair, e.side, e.atContact);
+
+    List<vector> response;
+    if
+    (
+        impulse_ == impulseType::constrained
+     && !frozenChains_.found(c)
+     && chainResponse
+        (
+            chains, c, labelList({b0, b1}), scalarList({1 - lambda, lambda}),
+            n, e.time, response
+        )
+    )
+    {
+        const label first = chains.start(c);
+        const scalar perUnit =
+            (1 - lambda)*(response[b0 - first] & n)
+          + lambda*(response[b1 - first] & n);
+        if (perUnit > 1e-8*freeResponse)
+        {
+            applyResponse(chains, c, -2*u/perUnit, response, velocitiesDagger);
+            return true;
+        }
+    }
+
+    // On the rod's two beads alone (impulse dumbbell)
+    const scalar J = -2*u/freeResponse;
+    for (const label bead : {b0, b1})
+    {
+        const scalar weight = (bead == b0) ? 1 - lambda : lambda;
+        const vector dv = (J*weight/mass)*n;
+        velocity_[bead] += dv;
+        velocitiesDagger[bead] += dv;
+        queue_.changedCourse(bead);
+        changedBeads_.append(bead);
+    }
     return true;
 }
 

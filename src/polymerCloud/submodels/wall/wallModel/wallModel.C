@@ -44,7 +44,8 @@ Foam::polymer::wallModel::wallModel
     interaction_(mesh.boundaryMesh().size(), interactionType::escape),
     escapedBeads_(),
     rejectedBeads_(),
-    faces_()
+    faces_(),
+    edges_()
 {
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
 
@@ -160,9 +161,26 @@ bool Foam::polymer::wallModel::faceImpact
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const Foam::polymer::wallEdges& Foam::polymer::wallModel::edges() const
+{
+    if (!edges_.valid())
+    {
+        boolList rebounds(interaction_.size());
+        forAll(rebounds, patchi)
+        {
+            rebounds[patchi] =
+                (interaction_[patchi] == interactionType::rebound);
+        }
+        edges_.reset(new wallEdges(faces(), rebounds));
+    }
+    return edges_();
+}
+
+
 void Foam::polymer::wallModel::setReach(const scalar reach)
 {
     faces_.reset(new boundaryFaces(mesh_, reach));
+    edges_.clear();
 }
 
 
