@@ -348,6 +348,17 @@ void Foam::polymer::polymerCloud::evolve()
     const scalar deltaT = runTime.deltaTValue();
     const scalar time = runTime.value();
 
+    // (not deltaT > 0) also catches a NaN
+    if (!(deltaT > 0))
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "The time step at time " << time << " is " << deltaT
+            << ": the chains' noise and drag need a positive step" << nl
+            << "    expected: deltaT <positive time>; (and, with"
+            << " adjustTimeStep, maxDeltaT and maxCo positive)"
+            << exit(FatalIOError);
+    }
+
     injectChains(time);
     stepper_->start();
     updateDrift();

@@ -22,8 +22,14 @@ Description
 void Foam::polymer::polymerCloud::writeProcessorLoads(Ostream& os) const
 {
     // A processor's exchange time includes its waits for the others: the
-    // busiest one waits least
-    List<FixedList<scalar, 4>> loads(Pstream::nProcs());
+    // busiest one waits least. Every entry starts at zero: the gather
+    // fills only the master's list (and, beyond two processors, parts of
+    // the intermediate ones'), and the others' must not be read as
+    // uninitialised numbers
+    List<FixedList<scalar, 4>> loads
+    (
+        Pstream::nProcs(), FixedList<scalar, 4>(Zero)
+    );
     loads[Pstream::myProcNo()] = FixedList<scalar, 4>
     ({
         scalar(chains_.nChains()),
@@ -33,6 +39,10 @@ void Foam::polymer::polymerCloud::writeProcessorLoads(Ostream& os) const
       + coupling_->exchangeSeconds()
     });
     Pstream::gatherList(loads);
+    if (!Pstream::master())
+    {
+        return;
+    }
 
     os  << "    processors' loads (chains, beads, s of cloud evolution,"
         << " of which exchanging and waiting):" << nl;
