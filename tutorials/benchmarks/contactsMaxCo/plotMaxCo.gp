@@ -5,7 +5,7 @@
 # The scenes are drawn slightly apart in maxCo so that equal values show.
 set terminal pngcairo size 1300,560 font ",11"
 set output "maxCo.png"
-set multiplot layout 1,2 title "Contacts in flowing devices: the paper's treatment (dumbbell impulses after the constraint, newton) against the default\n(impulses through the chains' rods, re-projected, rigid impact zones, exactRods); ringed: the run stopped"
+set multiplot layout 1,2 title "Contacts in flowing devices: the paper's treatment (dumbbell impulses after the constraint, newton) against the default\n(impulses through the chains' rods, rods meeting wall edges, re-projected, rigid impact zones, exactRods); ringed: the run stopped"
 set logscale x 2
 set xrange [0.2:2.5]
 set xtics ("0.25" 0.25, "0.5" 0.5, "1" 1, "2" 2)
@@ -33,11 +33,10 @@ plot for [i=1:3] rows(word(scenes, i), "paper") using ($1*shift(i)):2 \
      for [i=1:3] rows(word(scenes, i), "paper") using ($1*shift(i)):($3 > 0.5 ? $2 : 1/0) \
         with points pt 6 ps 3 lw 2 lc rgb word(colours, i) notitle
 
-unset logscale y
 set format y "%g"
-set yrange [0:*]
+set yrange [1:1000]
 set ylabel "cloud CPU per bead-step (us; elasticRods' audit on in every run)"
-set key top left
+set key bottom right
 plot for [i=1:3] rows(word(scenes, i), "paper") using ($1*shift(i)):4 \
         with linespoints lw 2 pt 7 lc rgb word(colours, i) title word(scenes, i)." paper's", \
      for [i=1:3] rows(word(scenes, i), "default") using ($1*shift(i)):4 \

@@ -13,6 +13,7 @@ License
 #include "contactProjection.H"
 #include "rodCrossingAudit.H"
 #include "rodPairCrossing.H"
+#include "cpuTime.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -46,6 +47,7 @@ Foam::polymer::contactProjection::contactProjection
     leftOff_(0),
     zonesFormed_(0),
     energyRemoved_(0),
+    seconds_(0),
     crossingsLeft_(0)
 {}
 
@@ -376,7 +378,7 @@ void Foam::polymer::contactProjection::placeZones
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::polymer::contactProjection::correct
+void Foam::polymer::contactProjection::project
 (
     const UList<point>& positionsStart,
     const scalar deltaT,
@@ -443,6 +445,20 @@ void Foam::polymer::contactProjection::correct
 }
 
 
+void Foam::polymer::contactProjection::correct
+(
+    const UList<point>& positionsStart,
+    const scalar deltaT,
+    const scalar time,
+    const wallModel* wall
+)
+{
+    cpuTime timer;
+    project(positionsStart, deltaT, time, wall);
+    seconds_ += timer.cpuTimeIncrement();
+}
+
+
 void Foam::polymer::contactProjection::writeReport(Ostream& os) const
 {
     os  << "    re-projection after contacts: chain-steps "
@@ -464,6 +480,7 @@ void Foam::polymer::contactProjection::writeReport(Ostream& os) const
         << returnReduce(scalar(crossingsLeft_), sumOp<scalar>())
         << "; chain-steps held for a zone wrapping around the period "
         << returnReduce(scalar(wrappedChainSteps_), sumOp<scalar>())
+        << "; CPU " << returnReduce(seconds_, sumOp<scalar>()) << " s"
         << nl;
 }
 

@@ -1,0 +1,171 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "elasticRods.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::polymer::collisionModels::elasticRods::edgePair
+(
+    const label rod,
+    const label edgei
+)
+{
+    const labelPair key(rod, edgei);
+    const auto found = edgePairIndex_.cfind(key);
+    if (found.found())
+    {
+        return found.val();
+    }
+    const label index = edgePairs_.size();
+    edgePairs_.append(key);
+    edgePairIndex_.insert(key, index);
+    return index;
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::predictEdges
+(
+    const label rod,
+    const scalar t,
+    const scalar dt
+)
+{
+    const wallEdges& edges = wall_->edges();
+    const label a0 = rods_[rod].first();
+    const label a1 = rods_[rod].second();
+    const point p0 = positionAt(a0, t);
+    const point p1 = positionAt(a1, t);
+
+    // The rod at its image inside the mesh, where the edges are
+    const vector shift = wall_->imageShift(0.5*(p0 + p1));
+    const boundBox box = sweep(rod, t, dt);
+    for
+    (
+        const label edgei
+      : edges.near(boundBox(box.min() + shift, box.max() + shift))
+    )
+    {
+        const rodPairCrossing pair
+        (
+            p0 + shift, p1 + shift, edges.start(edgei), edges.end(edgei),
+            velocity_[a0], velocity_[a1], Zero, Zero
+        );
+        const label pairi = edgePair(rod, edgei);
+        label side = 0;
+        bool atContact = false;
+        const scalar s = edgeContacts_.earliestCrossing
+        (
+            pairi, pair, *rootSolver_, dt - t, side, atContact
+        );
+        ++counters_.pairChecks;
+        if (s < 0)
+        {
+            continue;
+        }
+
+        event e;
+        e.time = t + s;
+        e.pair = pairi;
+        e.from = t;
+        e.offset = s;
+        e.normal = shift;   // the rod's image translation
+        e.patch = edges.patch(edgei);
+        e.side = side;
+        e.atContact = atContact;
+        e.edge = true;
+        e.beads = FixedList<label, 4>({a0, a1, -1, -1});
+        queue_.push(e);
+    }
+}
+
+
+bool Foam::polymer::collisionModels::elasticRods::resolveEdge
+(
+    const event& e,
+    const polymerChains& chains,
+    UList<vector>& velocitiesDagger
+)
+{
+    const label b0 = e.beads[0];
+    const label b1 = e.beads[1];
+    for (const label bead : {b0, b1})
+    {
+        position_[bead] =
+            positionAt(bead, e.from) + e.offset*velocity_[bead];
+        beadTime_[bead] = e.time;
+    }
+
+    // The rod at its image (e.normal holds its translation) and the edge
+    const wallEdges& edges = wall_->edges();
+    const label edgei = edgePairs_[e.pair].second();
+    const vector& shift = e.normal;
+    const rodPairCrossing pair
+    (
+        position_[b0] + shift, position_[b1] + shift,
+        edges.start(edgei), edges.end(edgei),
+        velocity_[b0], velocity_[b1], Zero, Zero
+    );
+    scalar lambda, mu;
+    vector n;
+    if (!pair.contact(0, lambda, mu, n))
+    {
+        return false;
+    }
+
+    // The contact's normal velocity reverses (the edge does not move)
+    const scalar u = ((1 - lambda)*velocity_[b0] + lambda*velocity_[b1]) & n;
+    const label c = chains.chainOf(b0);
+    const scalar mass = chains.type(c).beadMass();
+    const scalar freeResponse = (sqr(1 - lambda) + sqr(lambda))/mass;
+    changedBeads_.clear();
+    edgeContacts_.record(e.pair, e.side, e.atContact);
+
+    List<vector> response;
+    if
+    (
+        impulse_ == impulseType::constrained
+     && !frozenChains_.found(c)
+     && chainResponse
+        (
+            chains, c, labelList({b0, b1}), scalarList({1 - lambda, lambda}),
+            n, e.time, response
+        )
+    )
+    {
+        const label first = chains.start(c);
+        const scalar perUnit =
+            (1 - lambda)*(response[b0 - first] & n)
+          + lambda*(response[b1 - first] & n);
+        if (perUnit > 1e-8*freeResponse)
+        {
+            applyResponse(chains, c, -2*u/perUnit, response, velocitiesDagger);
+            return true;
+        }
+    }
+
+    // On the rod's two beads alone (impulse dumbbell)
+    const scalar J = -2*u/freeResponse;
+    for (const label bead : {b0, b1})
+    {
+        const scalar weight = (bead == b0) ? 1 - lambda : lambda;
+        const vector dv = (J*weight/mass)*n;
+        velocity_[bead] += dv;
+        velocitiesDagger[bead] += dv;
+        queue_.changedCourse(bead);
+        changedBeads_.append(bead);
+    }
+    return true;
+}
+
+
+// ************************************************************************* //
