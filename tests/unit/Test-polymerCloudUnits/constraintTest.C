@@ -11,6 +11,8 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
+#include <limits>
+#include <cmath>
 #include "testHelpers.H"
 #include "constraintModel.H"
 #include "trefoil.H"
@@ -179,6 +181,29 @@ TEST_P(constraintProjection, StopsOnFailureWhenAsked)
     autoPtr<constraintModel> constraint = constraintModel::New(d);
 
     EXPECT_THROW(constraint->correct(chains, positionsOld, dt, 0), Foam::error);
+}
+
+// A NaN in a chain (a bead's position) is no convergence: the solve fails
+// and is counted, and the chains' rod error is NaN, not the others' largest
+// (max() and 'mag(x) > tol' pass over a NaN)
+TEST_P(constraintProjection, ANaNIsAFailure)
+{
+    const auto [model, ring, directions] = GetParam();
+    std::mt19937_64 gen(4242);
+
+    PtrList<chainType> types(oneType(nBeads, a, m, 1, kT, ring));
+    polymerChains chains(types);
+    const List<vector> positionsOld = makeChains(chains, ring, gen);
+    perturb(chains, 0.02*a, gen);
+    chains.positions()[nBeads + 3].y() = std::numeric_limits<scalar>::quiet_NaN();
+
+    autoPtr<constraintModel> constraint = makeModel(model, directions, 50);
+    constraint->correct(chains, positionsOld, dt, 0);
+
+    EXPECT_GT(constraint->count().failures, 0);
+    EXPECT_TRUE(std::isnan(chains.maxRodLengthError()));
+    EXPECT_TRUE(std::isnan(chains.maxRodLengthError(1)));
+    EXPECT_FALSE(std::isnan(chains.maxRodLengthError(0)));
 }
 
 INSTANTIATE_TEST_SUITE_P

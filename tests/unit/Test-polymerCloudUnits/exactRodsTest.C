@@ -18,6 +18,8 @@ Description
 #include "constraintModel.H"
 #include "trefoil.H"
 #include <tuple>
+#include <limits>
+#include <cmath>
 
 using namespace Foam;
 using namespace Foam::polymer;
@@ -118,6 +120,23 @@ TEST_P(exactRodsProjection, ExactRodsAtAnyDisplacement)
         mag(sum(chains.velocities()) - momentum),
         1e-12*chains.nBeads()*(std::sqrt(kT/m) + 3*delta*a/dt)
     );
+}
+
+
+// A NaN in a chain is a failure of exactRods too (it returns exact rods
+// for any finite state), counted, not a projection
+TEST(exactRods, ANaNIsAFailure)
+{
+    std::mt19937_64 gen(99);
+    PtrList<chainType> types(oneType(nBeads, a, m, 1, kT, false));
+    polymerChains chains(types);
+    const List<vector> positionsOld = exactChains(chains, false, gen);
+    chains.positions()[2].z() = std::numeric_limits<scalar>::quiet_NaN();
+
+    autoPtr<constraintModel> exact = model("exactRods", "start");
+    exact->correct(chains, positionsOld, dt, 0);
+    EXPECT_GT(exact->count().failures, 0);
+    EXPECT_TRUE(std::isnan(chains.maxRodLengthError()));
 }
 
 

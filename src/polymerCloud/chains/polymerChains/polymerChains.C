@@ -13,6 +13,7 @@ License
 #include "polymerChains.H"
 
 #include <algorithm>
+#include <cmath>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -167,11 +168,16 @@ Foam::polymer::polymerChains::maxRodLengthError(const label chaini) const
     const vector* x = positions_.cdata() + start(chaini);
     const label n = t.nBeads();
 
+    // A NaN is returned as it is: max() would pass over it
     scalar maxError = 0;
     for (label k = 0; k < t.nRods(); ++k)
     {
-        const scalar length = mag(x[(k + 1) % n] - x[k]);
-        maxError = max(maxError, mag(length - t.rodLength()));
+        const scalar error = mag(mag(x[(k + 1) % n] - x[k]) - t.rodLength());
+        if (std::isnan(error))
+        {
+            return error;
+        }
+        maxError = max(maxError, error);
     }
 
     return maxError/t.rodLength();
@@ -183,7 +189,12 @@ Foam::scalar Foam::polymer::polymerChains::maxRodLengthError() const
     scalar maxError = 0;
     for (label c = 0; c < nChains(); ++c)
     {
-        maxError = max(maxError, maxRodLengthError(c));
+        const scalar error = maxRodLengthError(c);
+        if (std::isnan(error))
+        {
+            return error;
+        }
+        maxError = max(maxError, error);
     }
     return maxError;
 }

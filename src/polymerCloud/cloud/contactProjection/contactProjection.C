@@ -396,7 +396,7 @@ void Foam::polymer::contactProjection::project
     label nOff = 0;
     for (label c = 0; c < chains_.nChains(); ++c)
     {
-        if (chains_.maxRodLengthError(c) > tolerance)
+        if (!(chains_.maxRodLengthError(c) <= tolerance))
         {
             moved[c] = true;
             ++nOff;

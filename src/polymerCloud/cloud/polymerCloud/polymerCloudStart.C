@@ -172,7 +172,7 @@ void Foam::polymer::polymerCloud::checkRods(const fileName& origin) const
     {
         const scalar error = chains_.maxRodLengthError(c);
 
-        if (error > solution_.rodLengthCheck())
+        if (!(error <= solution_.rodLengthCheck()))
         {
             FatalIOErrorInFunction(properties_)
                 << "Chain " << chains_.globalId(c) << " ("

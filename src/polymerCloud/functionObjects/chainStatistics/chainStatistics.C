@@ -19,6 +19,8 @@ License
 #include "OSspecific.H"
 #include "addToRunTimeSelectionTable.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -133,7 +135,12 @@ void Foam::polymer::cloudFunctions::chainStatistics::sampleRodError()
     const polymerChains& chains = cloud_.chains();
     for (label c = 0; c < chains.nChains(); ++c)
     {
-        largestRodError_ = max(largestRodError_, chains.maxRodLengthError(c));
+        // A NaN stays: max() would pass over it
+        const scalar error = chains.maxRodLengthError(c);
+        if (std::isnan(error) || error > largestRodError_)
+        {
+            largestRodError_ = error;
+        }
     }
 }
 

@@ -69,7 +69,8 @@ Foam::label Foam::polymer::constraintModels::RATTLE::correctChainVelocities
 
             largest = max(largest, mag(alongRod));
 
-            if (mag(alongRod) > absoluteTolerance)
+            // (not <=: a NaN is not converged)
+            if (!(mag(alongRod) <= absoluteTolerance))
             {
                 const vector kick = (alongRod/(2*(r & r)))*r;
                 v[k] += kick;

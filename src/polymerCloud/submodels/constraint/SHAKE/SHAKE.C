@@ -125,7 +125,8 @@ Foam::label Foam::polymer::constraintModels::SHAKE::correctChainLengths
             const vector s = x[j] - x[k];
             const scalar excess = a2 - (s & s);
 
-            if (mag(excess) > squaredTolerance)
+            // (not <=: a NaN is not converged)
+            if (!(mag(excess) <= squaredTolerance))
             {
                 converged = false;
 

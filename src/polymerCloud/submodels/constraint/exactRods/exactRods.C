@@ -15,6 +15,8 @@ License
 #include "makePolymerModel.H"
 #include "symmTensor.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 makePolymerModel(constraintModel, constraintModels, exactRods)
@@ -474,6 +476,12 @@ Foam::label Foam::polymer::constraintModels::exactRods::correctChainLengths
     }
 
     residual = chains.maxRodLengthError(chaini);
+    if (std::isnan(residual))
+    {
+        // A NaN in the chain (its positions or the drift that made them)
+        // is no projection: a failure, reported with the chain and time
+        return -1 - iter;
+    }
     return iter - newtonIter;
 }
 
