@@ -48,6 +48,8 @@ Foam::polymer::contactProjection::contactProjection
     zonesFormed_(0),
     energyRemoved_(0),
     seconds_(0),
+    zoneSeconds_(0),
+    auditSeconds_(0),
     crossingsLeft_(0)
 {}
 
@@ -429,8 +431,12 @@ void Foam::polymer::contactProjection::project
     const label maxPasses = 3*chains_.nChains() + 2;
     for (label pass = 0; pass < maxPasses; ++pass)
     {
+        cpuTime zoneTimer;
         placeZones(wall, positionsStart, positionsAfter, velocitiesAfter);
-        if (!checkPaths(audit, moved, positionsAfter, time))
+        zoneSeconds_ += zoneTimer.cpuTimeIncrement();
+        const bool changed = checkPaths(audit, moved, positionsAfter, time);
+        auditSeconds_ += zoneTimer.cpuTimeIncrement();
+        if (!changed)
         {
             countZones(velocitiesAfter);
             return;
@@ -480,8 +486,10 @@ void Foam::polymer::contactProjection::writeReport(Ostream& os) const
         << returnReduce(scalar(crossingsLeft_), sumOp<scalar>())
         << "; chain-steps held for a zone wrapping around the period "
         << returnReduce(scalar(wrappedChainSteps_), sumOp<scalar>())
-        << "; CPU " << returnReduce(seconds_, sumOp<scalar>()) << " s"
-        << nl;
+        << "; CPU " << returnReduce(seconds_, sumOp<scalar>())
+        << " s (placing zones " << returnReduce(zoneSeconds_, sumOp<scalar>())
+        << " s, auditing the paths "
+        << returnReduce(auditSeconds_, sumOp<scalar>()) << " s)" << nl;
 }
 
 
