@@ -224,6 +224,21 @@ Foam::polymer::boundaryFaces::addHalo(const polyMesh& mesh, const scalar reach)
 }
 
 
+Foam::treeBoundBox Foam::polymer::boundaryFaces::treeBounds
+(
+    const pointField& points
+)
+{
+    // As meshSearch's boundary tree: a box a little larger than the
+    // points, not aligned with them
+    Random random(123456);
+    treeBoundBox bb(treeBoundBox(points).extend(random, 1e-4));
+    bb.min() -= point::uniform(ROOTVSMALL);
+    bb.max() += point::uniform(ROOTVSMALL);
+    return bb;
+}
+
+
 void Foam::polymer::boundaryFaces::buildTree()
 {
     if (faces_.empty())
@@ -233,13 +248,7 @@ void Foam::polymer::boundaryFaces::buildTree()
 
     facePatch_.reset(new primitiveFacePatch(faces_, points_));
 
-    // As meshSearch's boundary tree: a box a little larger than the faces,
-    // not aligned with them
-    Random random(123456);
-    treeBoundBox bb(treeBoundBox(points_).extend(random, 1e-4));
-    bb.min() -= point::uniform(ROOTVSMALL);
-    bb.max() += point::uniform(ROOTVSMALL);
-
+    const treeBoundBox bb(treeBounds(points_));
     tree_.reset
     (
         new indexedOctree<treeFaces>

@@ -13,7 +13,6 @@ License
 #include "wallEdges.H"
 #include "mergePoints.H"
 #include "primitiveFacePatch.H"
-#include "Random.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -95,17 +94,12 @@ Foam::polymer::wallEdges::wallEdges
         return;
     }
 
-    // As boundaryFaces' tree: a box a little larger, not aligned
-    Random random(123456);
-    treeBoundBox bb(treeBoundBox(points_).extend(random, 1e-4));
-    bb.min() -= point::uniform(ROOTVSMALL);
-    bb.max() += point::uniform(ROOTVSMALL);
     tree_.reset
     (
         new indexedOctree<treeDataEdge>
         (
             treeDataEdge(true, edges_, points_, identity(edges_.size())),
-            bb,
+            boundaryFaces::treeBounds(points_),
             8,      // maximum depth
             10,     // edges per leaf to refine
             3.0     // duplicity
