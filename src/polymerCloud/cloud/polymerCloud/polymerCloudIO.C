@@ -27,6 +27,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "polymerCloud.H"
+#include "checkedInput.H"
 #include "IOField.H"
 #include "IFstream.H"
 #include "OFstream.H"
@@ -68,6 +69,54 @@ Foam::fileName Foam::polymer::polymerCloud::undecomposedCloudDir() const
 {
     const Time& runTime = mesh_.time();
     return runTime.globalPath()/runTime.timeName()/cloud::prefix/name();
+}
+
+
+Foam::fileName Foam::polymer::polymerCloud::outputPropertiesFile
+(
+    const fileName& timeDir
+) const
+{
+    return
+        timeDir/"uniform"/cloud::prefix/name()/(name() + "OutputProperties");
+}
+
+
+Foam::label Foam::polymer::polymerCloud::readNextChainId
+(
+    const fileName& timeDir
+) const
+{
+    IFstream is(outputPropertiesFile(timeDir));
+    if (!is.good())
+    {
+        return -1;
+    }
+    const dictionary dict(is);
+    return checkedInput::labelAtLeastOrDefault
+    (
+        dict, "nextChainId", -1, 0, "<the next chain's id>"
+    );
+}
+
+
+void Foam::polymer::polymerCloud::writeNextChainId() const
+{
+    const fileName file(outputPropertiesFile(mesh_.time().timePath()));
+    mkDir(file.path());
+    OFstream os(file);
+    IOobject
+    (
+        file.name(),
+        mesh_.time().timeName(),
+        "uniform"/cloud::prefix/name(),
+        mesh_,
+        IOobject::NO_READ,
+        IOobject::NO_WRITE,
+        false
+    ).writeHeader(os, "dictionary");
+    os.writeEntry("nextChainId", nextChainId_);
+    IOobject::writeEndDivider(os);
 }
 
 
@@ -267,6 +316,7 @@ bool Foam::polymer::polymerCloud::writeObject
      && typeIndex.writeObject(fmt, ver, cmp, true);
 
     IOstream::defaultPrecision(oldPrecision);
+    writeNextChainId();
 
     for (polymerCloudFunction& function : functions_)
     {

@@ -428,12 +428,26 @@ bool Foam::polymer::polymerCloud::startChains(const dictionary& subModels)
 
     distribution_->sort();
 
+    // The next chain id: the saved one (a chain that left before the
+    // write may have had the largest id), at least past every chain held
     label largestId = -1;
     for (label c = 0; c < chains_.nChains(); ++c)
     {
         largestId = max(largestId, chains_.globalId(c));
     }
-    nextChainId_ = returnReduce(largestId, maxOp<label>()) + 1;
+    const label savedNext =
+        restart ? readNextChainId(mesh_.time().timePath())
+      : fromUndecomposed
+      ? readNextChainId
+        (
+            mesh_.time().globalPath()/mesh_.time().timeName()
+        )
+      : -1;
+    nextChainId_ = max
+    (
+        returnReduce(largestId, maxOp<label>()) + 1,
+        returnReduce(savedNext, maxOp<label>())
+    );
 
     return restart || fromUndecomposed;
 }
