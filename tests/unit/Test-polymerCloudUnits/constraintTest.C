@@ -15,6 +15,7 @@ Description
 #include <cmath>
 #include "testHelpers.H"
 #include "constraintModel.H"
+#include "maxOrNaN.H"
 #include "trefoil.H"
 #include <tuple>
 
@@ -182,6 +183,19 @@ TEST_P(constraintProjection, StopsOnFailureWhenAsked)
 
     EXPECT_THROW(constraint->correct(chains, positionsOld, dt, 0), Foam::error);
 }
+
+// A running maximum keeps a NaN wherever it comes (Foam::max passes over
+// one that a number follows)
+TEST(maxOrNaN, KeepsANaN)
+{
+    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
+    EXPECT_EQ(maxOrNaN(1, 2), 2);
+    EXPECT_EQ(maxOrNaN(3, 2), 3);
+    EXPECT_TRUE(std::isnan(maxOrNaN(0, nan)));
+    EXPECT_TRUE(std::isnan(maxOrNaN(nan, 1)));
+    EXPECT_FALSE(std::isnan(max(max(scalar(0), nan), scalar(1))));
+}
+
 
 // A NaN in a chain (a bead's position) is no convergence: the solve fails
 // and is counted, and the chains' rod error is NaN, not the others' largest

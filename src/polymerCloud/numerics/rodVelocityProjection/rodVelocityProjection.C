@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rodVelocityProjection.H"
+#include "maxOrNaN.H"
 
 // * * * * * * * * * * * * * * * Static Member Functions  * * * * * * * * * * //
 
@@ -76,11 +77,11 @@ Foam::scalar Foam::polymer::rodVelocityProjection::kick
     for (label k = 0; k + 1 < n; ++k)
     {
         w[k + 1] += m[k + 1]*r[k + 1] - m[k]*r[k];
-        largest = max(largest, mag(r[k] & (w[k + 1] - w[k])));
+        largest = maxOrNaN(largest, mag(r[k] & (w[k + 1] - w[k])));
     }
     if (type.ring())
     {
-        largest = max(largest, mag(r[n - 1] & (w[0] - w[n - 1])));
+        largest = maxOrNaN(largest, mag(r[n - 1] & (w[0] - w[n - 1])));
     }
 
     return largest;

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "RATTLE.H"
+#include "maxOrNaN.H"
 #include "checkedInput.H"
 #include "makePolymerModel.H"
 
@@ -67,7 +68,7 @@ Foam::label Foam::polymer::constraintModels::RATTLE::correctChainVelocities
             const vector r = x[j] - x[k];
             const scalar alongRod = r & (v[j] - v[k]);
 
-            largest = max(largest, mag(alongRod));
+            largest = maxOrNaN(largest, mag(alongRod));
 
             // (not <=: a NaN is not converged)
             if (!(mag(alongRod) <= absoluteTolerance))
@@ -89,7 +90,7 @@ Foam::label Foam::polymer::constraintModels::RATTLE::correctChainVelocities
     for (label k = 0; k < nRods; ++k)
     {
         const label j = (k + 1 < n) ? k + 1 : 0;
-        residual = max(residual, mag((x[j] - x[k]) & (v[j] - v[k])));
+        residual = maxOrNaN(residual, mag((x[j] - x[k]) & (v[j] - v[k])));
     }
     residual /= scale;
 

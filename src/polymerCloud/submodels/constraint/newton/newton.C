@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "newton.H"
+#include "maxOrNaN.H"
 #include "checkedInput.H"
 #include "makePolymerModel.H"
 
@@ -98,7 +99,7 @@ Foam::scalar Foam::polymer::constraintModels::newton::linearise
         const label j = (k + 1 < n) ? k + 1 : 0;
         const vector s = x[j] - x[k];
         const scalar sigma = (s & s) - a2;
-        largest = max(largest, mag(sigma));
+        largest = maxOrNaN(largest, mag(sigma));
 
         lower[k] = -2*(s & d[k - 1]);
         diagonal[k] = 4*(s & d[k]);
