@@ -276,13 +276,8 @@ int main(int argc, char *argv[])
         }
 
         autoPtr<frame> current(new frame(readFrame(runTime, cloudName)));
-        // The rods in the previous frame's order (the audit's), the rings
-        // in the current one's
-        List<labelPair> previousRings;
-        if (previous)
-        {
-            findRods(previous(), types, rods, previousRings);
-        }
+        // The audit's rods are the previous frame's (in its chain order),
+        // the rings the current one's
         List<labelPair> currentRods;
         findRods(current(), types, currentRods, rings);
 
@@ -357,6 +352,7 @@ int main(int argc, char *argv[])
         Info<< nl;
 
         previous = std::move(current);
+        rods.transfer(currentRods);
     }
 
     Info<< nl << "polymerCheckTopology: " << nCrossings

@@ -11,9 +11,9 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "polymerChains.H"
+#include "maxOrNaN.H"
 
 #include <algorithm>
-#include <cmath>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -168,16 +168,11 @@ Foam::polymer::polymerChains::maxRodLengthError(const label chaini) const
     const vector* x = positions_.cdata() + start(chaini);
     const label n = t.nBeads();
 
-    // A NaN is returned as it is: max() would pass over it
     scalar maxError = 0;
     for (label k = 0; k < t.nRods(); ++k)
     {
-        const scalar error = mag(mag(x[(k + 1) % n] - x[k]) - t.rodLength());
-        if (std::isnan(error))
-        {
-            return error;
-        }
-        maxError = max(maxError, error);
+        const scalar length = mag(x[(k + 1) % n] - x[k]);
+        maxError = maxOrNaN(maxError, mag(length - t.rodLength()));
     }
 
     return maxError/t.rodLength();
@@ -189,12 +184,7 @@ Foam::scalar Foam::polymer::polymerChains::maxRodLengthError() const
     scalar maxError = 0;
     for (label c = 0; c < nChains(); ++c)
     {
-        const scalar error = maxRodLengthError(c);
-        if (std::isnan(error))
-        {
-            return error;
-        }
-        maxError = max(maxError, error);
+        maxError = maxOrNaN(maxError, maxRodLengthError(c));
     }
     return maxError;
 }

@@ -29,6 +29,7 @@ Description
 #include "polymerCloud.H"
 #include "checkedInput.H"
 #include "IOField.H"
+#include "IOdictionary.H"
 #include "IFstream.H"
 #include "OFstream.H"
 #include "OSspecific.H"
@@ -102,21 +103,21 @@ Foam::label Foam::polymer::polymerCloud::readNextChainId
 
 void Foam::polymer::polymerCloud::writeNextChainId() const
 {
-    const fileName file(outputPropertiesFile(mesh_.time().timePath()));
-    mkDir(file.path());
-    OFstream os(file);
-    IOobject
+    IOdictionary outputProperties
     (
-        file.name(),
-        mesh_.time().timeName(),
-        "uniform"/cloud::prefix/name(),
-        mesh_,
-        IOobject::NO_READ,
-        IOobject::NO_WRITE,
-        false
-    ).writeHeader(os, "dictionary");
-    os.writeEntry("nextChainId", nextChainId_);
-    IOobject::writeEndDivider(os);
+        IOobject
+        (
+            name() + "OutputProperties",
+            mesh_.time().timeName(),
+            "uniform"/cloud::prefix/name(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    outputProperties.add("nextChainId", nextChainId_);
+    outputProperties.regIOobject::write();
 }
 
 

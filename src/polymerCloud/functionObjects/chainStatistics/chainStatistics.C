@@ -18,8 +18,7 @@ License
 #include "checkedInput.H"
 #include "OSspecific.H"
 #include "addToRunTimeSelectionTable.H"
-
-#include <cmath>
+#include "maxOrNaN.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -135,12 +134,8 @@ void Foam::polymer::cloudFunctions::chainStatistics::sampleRodError()
     const polymerChains& chains = cloud_.chains();
     for (label c = 0; c < chains.nChains(); ++c)
     {
-        // A NaN stays: max() would pass over it
-        const scalar error = chains.maxRodLengthError(c);
-        if (std::isnan(error) || error > largestRodError_)
-        {
-            largestRodError_ = error;
-        }
+        largestRodError_ =
+            maxOrNaN(largestRodError_, chains.maxRodLengthError(c));
     }
 }
 

@@ -209,14 +209,15 @@ void Foam::polymer::collisionModels::elasticRods::repredict
         {
             continue;
         }
-        grid_.grow(rod, sweep(rod, t, dt));
+        const boundBox box(sweep(rod, t, dt));
+        grid_.grow(rod, box);
         for (const label pairi : grid_.rodPairs(rod))
         {
             predict(pairi, t, dt);
         }
         if (wall_ && wallEdges_ && wall_->edges().size())
         {
-            predictEdges(rod, t, dt);
+            predictEdges(rod, box, t, dt);
         }
     }
 
@@ -361,7 +362,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
         {
             forAll(rods_.rods(), rod)
             {
-                predictEdges(rod, 0, deltaT);
+                predictEdges(rod, sweep(rod, 0, deltaT), 0, deltaT);
             }
         }
     }

@@ -36,6 +36,7 @@ Foam::label Foam::polymer::collisionModels::elasticRods::edgePair
 void Foam::polymer::collisionModels::elasticRods::predictEdges
 (
     const label rod,
+    const boundBox& box,
     const scalar t,
     const scalar dt
 )
@@ -48,7 +49,6 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
 
     // The rod at its image inside the mesh, where the edges are
     const vector shift = wall_->imageShift(0.5*(p0 + p1));
-    const boundBox box = sweep(rod, t, dt);
     for
     (
         const label edgei
@@ -122,39 +122,26 @@ bool Foam::polymer::collisionModels::elasticRods::resolveEdge
         return false;
     }
 
-    // The contact's normal velocity reverses (the edge does not move)
-    const scalar u = ((1 - lambda)*velocity_[b0] + lambda*velocity_[b1]) & n;
-    const label c = chains.chainOf(b0);
-    const scalar mass = chains.type(c).beadMass();
-    const scalar freeResponse = (sqr(1 - lambda) + sqr(lambda))/mass;
-    changedBeads_.clear();
+    // The contact's normal velocity reverses (the edge does not move),
+    // through the chain's rods or on the rod's two beads alone
     edgeContacts_.record(e.pair, e.side, e.atContact);
-
-    List<vector> response;
     if
     (
         impulse_ == impulseType::constrained
-     && !frozenChains_.found(c)
-     && chainResponse
+     && reverseThroughChain
         (
-            chains, c, labelList({b0, b1}), scalarList({1 - lambda, lambda}),
-            n, e.time, response
+            chains, labelList({b0, b1}), scalarList({1 - lambda, lambda}),
+            n, e.time, velocitiesDagger
         )
     )
     {
-        const label first = chains.start(c);
-        const scalar perUnit =
-            (1 - lambda)*(response[b0 - first] & n)
-          + lambda*(response[b1 - first] & n);
-        if (perUnit > 1e-8*freeResponse)
-        {
-            applyResponse(chains, c, -2*u/perUnit, response, velocitiesDagger);
-            return true;
-        }
+        return true;
     }
 
-    // On the rod's two beads alone (impulse dumbbell)
-    const scalar J = -2*u/freeResponse;
+    const scalar u = ((1 - lambda)*velocity_[b0] + lambda*velocity_[b1]) & n;
+    const scalar mass = chains.type(chains.chainOf(b0)).beadMass();
+    const scalar J = -2*u/((sqr(1 - lambda) + sqr(lambda))/mass);
+    changedBeads_.clear();
     for (const label bead : {b0, b1})
     {
         const scalar weight = (bead == b0) ? 1 - lambda : lambda;

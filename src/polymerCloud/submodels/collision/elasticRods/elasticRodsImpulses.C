@@ -124,8 +124,15 @@ bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
     // A chain held by a stall is an immovable obstacle: no response
     const bool heldI = heldChains_.found(chainI);
     const bool heldJ = heldChains_.found(chainJ);
-    List<vector> responseI(chains.size(chainI), Zero);
-    List<vector> responseJ(chains.size(chainJ), Zero);
+    List<vector> responseI, responseJ;
+    if (heldI)
+    {
+        responseI.setSize(chains.size(chainI), Zero);
+    }
+    if (heldJ)
+    {
+        responseJ.setSize(chains.size(chainJ), Zero);
+    }
     if
     (
         (heldI && heldJ)
@@ -183,6 +190,48 @@ bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
 }
 
 
+bool Foam::polymer::collisionModels::elasticRods::reverseThroughChain
+(
+    const polymerChains& chains,
+    const UList<label>& beads,
+    const UList<scalar>& weights,
+    const vector& n,
+    const scalar t,
+    UList<vector>& velocitiesDagger
+)
+{
+    const label c = chains.chainOf(beads[0]);
+    List<vector> response;
+    if
+    (
+        frozenChains_.found(c)
+     || !chainResponse(chains, c, beads, weights, n, t, response)
+    )
+    {
+        return false;
+    }
+
+    // The contact's normal velocity u and its change per unit impulse
+    const label first = chains.start(c);
+    vector contactVelocity(Zero);
+    scalar perUnit = 0, freeResponse = 0;
+    forAll(beads, k)
+    {
+        contactVelocity += weights[k]*velocity_[beads[k]];
+        perUnit += weights[k]*(response[beads[k] - first] & n);
+        freeResponse += sqr(weights[k]);
+    }
+    const scalar u = contactVelocity & n;
+    if (perUnit <= 1e-8*(freeResponse/chains.type(c).beadMass()))
+    {
+        return false;
+    }
+    changedBeads_.clear();
+    applyResponse(chains, c, -2*u/perUnit, response, velocitiesDagger);
+    return true;
+}
+
+
 bool Foam::polymer::collisionModels::elasticRods::reboundConstrained
 (
     const event& e,
@@ -191,31 +240,18 @@ bool Foam::polymer::collisionModels::elasticRods::reboundConstrained
 )
 {
     const label bead = -1 - e.pair;
-    const scalar u = velocity_[bead] & e.normal;
-    const label c = chains.chainOf(bead);
-    List<vector> response;
     if
     (
-        u >= 0
-     || frozenChains_.found(c)
-     || !chainResponse
+        (velocity_[bead] & e.normal) >= 0
+     || !reverseThroughChain
         (
-            chains, c, labelList({bead}), scalarList({1.0}), e.normal,
-            e.time, response
+            chains, labelList({bead}), scalarList({1.0}), e.normal, e.time,
+            velocitiesDagger
         )
     )
     {
         return false;
     }
-
-    // The bead's normal velocity reverses: J = -2u/(its response per unit)
-    const scalar perUnit = response[bead - chains.start(c)] & e.normal;
-    if (perUnit <= 1e-8/chains.type(c).beadMass())
-    {
-        return false;
-    }
-    changedBeads_.clear();
-    applyResponse(chains, c, -2*u/perUnit, response, velocitiesDagger);
     wall_->countRebound();
     return true;
 }
