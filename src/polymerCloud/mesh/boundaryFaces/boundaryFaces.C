@@ -301,4 +301,18 @@ Foam::pointIndexHit Foam::polymer::boundaryFaces::firstEntered
 }
 
 
+Foam::pointIndexHit Foam::polymer::boundaryFaces::nearest
+(
+    const point& p,
+    const scalar maxDistSqr
+) const
+{
+    if (!tree_.valid())
+    {
+        return pointIndexHit();
+    }
+    return tree_->findNearest(p, maxDistSqr);
+}
+
+
 // ************************************************************************* //

@@ -45,7 +45,8 @@ Foam::polymer::wallModel::wallModel
     escapedBeads_(),
     rejectedBeads_(),
     faces_(),
-    edges_()
+    edges_(),
+    clearance_()
 {
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
 
@@ -121,6 +122,16 @@ bool Foam::polymer::wallModel::faceImpact
     point start = periodic_.wrap(x);
     scalar elapsed = 0;
 
+    if (!clearance_.valid())
+    {
+        clearance_.reset(new wallClearance(faces()));
+    }
+    if (T*mag(v) < clearance_()(start))
+    {
+        // No face within the path's reach: the search would miss
+        return false;
+    }
+
     for (label piece = 0; piece < 64; ++piece)
     {
         const vector path = (T - elapsed)*v;
@@ -181,6 +192,7 @@ void Foam::polymer::wallModel::setReach(const scalar reach)
 {
     faces_.reset(new boundaryFaces(mesh_, reach));
     edges_.clear();
+    clearance_.clear();
 }
 
 

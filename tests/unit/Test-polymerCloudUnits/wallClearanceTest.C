@@ -1,0 +1,123 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+Description
+    The walls' clearance (wallClearance), by which the wall models pass
+    over the face search of a path that cannot reach a face. In the
+    L-shaped channel (tests/cases/wallL: fluid x < 5 or y < 5, 0 < z < 5,
+    walls all round):
+    - at 20000 random points of the fluid the clearance is never more than
+      the distance to the nearest face, and never less than that distance
+      (up to the search's cap) less a voxel's diagonal;
+    - of 20000 random paths from those points, none shorter than its
+      start's clearance enters a face, and the wall model's impacts are
+      the face search's, path for path.
+\*---------------------------------------------------------------------------*/
+
+#include "wallScenes.H"
+#include "wallClearance.H"
+
+#include <random>
+
+using namespace polymerCloudTest;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// A random point of the L channel's fluid
+point fluidPoint(std::mt19937_64& engine)
+{
+    std::uniform_real_distribution<scalar> u(0, 1);
+    for (;;)
+    {
+        const point p(10*u(engine), 10*u(engine), 5*u(engine));
+        if (p.x() < 5 || p.y() < 5)
+        {
+            return p;
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
+TEST(wallClearance, WithinAVoxelOfTheNearestFace)
+{
+    const fvMesh* mesh = meshOf("wallL");
+    ASSERT_TRUE(mesh);
+    const boundaryFaces faces(*mesh, 0);
+    const wallClearance clearance(faces);
+    EXPECT_GE(clearance.size(), 4096);
+
+    // From the construction: the distance less a voxel's diagonal, up to
+    // the search's cap of eight half diagonals
+    const scalar diagonal = std::sqrt(3.0)*clearance.voxelSize();
+    std::mt19937_64 engine(7);
+    label positive = 0;
+    for (label i = 0; i < 20000; ++i)
+    {
+        const point p(fluidPoint(engine));
+        const pointIndexHit nearest = faces.nearest(p, GREAT);
+        ASSERT_TRUE(nearest.hit());
+        const scalar distance = mag(nearest.hitPoint() - p);
+        ASSERT_LE(clearance(p), distance) << "at " << str(p);
+        ASSERT_GE
+        (
+            clearance(p),
+            (min(distance, 4*diagonal) - diagonal)*(1 - 1e-6) - 1e-12
+        ) << "at " << str(p);
+        positive += clearance(p) > 0;
+    }
+    EXPECT_GT(positive, 5000);
+}
+
+
+TEST(wallClearance, NoPathWithinItEntersAFace)
+{
+    const fvMesh* mesh = meshOf("wallL");
+    ASSERT_TRUE(mesh);
+    const boundaryFaces faces(*mesh, 0);
+    const wallClearance clearance(faces);
+    autoPtr<wallModel> wall = newWall(*mesh, "meshFaces");
+
+    std::mt19937_64 engine(11);
+    std::normal_distribution<scalar> normal(0, 1);
+    std::uniform_real_distribution<scalar> u(0, 1);
+    label within = 0, hits = 0;
+    for (label i = 0; i < 20000; ++i)
+    {
+        const point p(fluidPoint(engine));
+        vector direction(normal(engine), normal(engine), normal(engine));
+        direction /= mag(direction);
+        // Lengths about the clearance, up to twice it, and some long ones
+        const scalar length =
+            (i % 4 == 0 ? 3.0 : 2*clearance(p))*u(engine);
+        const vector path(length*direction);
+
+        const pointIndexHit h = faces.firstEntered(p, p + path);
+        if (length < clearance(p))
+        {
+            ++within;
+            EXPECT_FALSE(h.hit()) << "path " << str(path) << " from " << str(p);
+        }
+
+        wallModel::impact hit;
+        const bool met = wall->predict(p, path, 1, hit);
+        ASSERT_EQ(met, h.hit()) << "path " << str(path) << " from " << str(p);
+        hits += met;
+    }
+    EXPECT_GT(within, 5000);
+    EXPECT_GT(hits, 500);
+}
+
+
+// ************************************************************************* //
