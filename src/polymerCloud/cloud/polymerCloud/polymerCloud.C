@@ -183,6 +183,7 @@ Foam::polymer::polymerCloud::polymerCloud
     nInjected_(0),
     functions_(),
     evolveSeconds_(0),
+    pathTimes_(),
     beadSteps_(0)
 {
     // Keep the file's name for messages when given a dictionary read from it
@@ -256,6 +257,7 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
 {
     // 1. Unconstrained update in the fluid velocity and forces at x^n
     stepper_->integrate(deltaT);
+    pathTimes_.lap(pathTimes::integrate);
 
     for (polymerCloudFunction& function : functions_)
     {
@@ -267,14 +269,17 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
             deltaT
         );
     }
+    pathTimes_.lap(pathTimes::functions);
 
     // 2. Rod lengths and rod velocities; failed chains are sub-stepped
     stepper_->constrain(deltaT);
+    pathTimes_.lap(pathTimes::constrain);
 
     for (polymerCloudFunction& function : functions_)
     {
         function.postConstrain(deltaT);
     }
+    pathTimes_.lap(pathTimes::functions);
 
     // The momentum the chains exchanged with the solvent (two-way): the
     // friction and noise of each bead's path, the constraint's included;
@@ -292,6 +297,7 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
             !firstCycle,
             mesh_.time().deltaTValue()
         );
+        pathTimes_.lap(pathTimes::couple);
     }
 
     // 3. Rod-rod collisions and bead-wall impacts, chains of different
@@ -305,6 +311,7 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
     (
         chains_, stepper_->positionsOld(), deltaT, time, wall_.get()
     );
+    pathTimes_.lap(pathTimes::collide);
     if (contactProjection_)
     {
         contactProjection_->correct
@@ -314,6 +321,7 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
             time,
             wall_.get()
         );
+        pathTimes_.lap(pathTimes::reproject);
     }
     collisionGroups_->checkBoxes();
     rejectChains();
@@ -323,6 +331,7 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
         model.endStep();
     }
     distribution_->update();
+    pathTimes_.lap(pathTimes::bookkeep);
 
     beadSteps_ += chains_.nBeads();
 }
@@ -343,6 +352,7 @@ void Foam::polymer::polymerCloud::evolve()
     }
 
     cpuTime timer;
+    pathTimes_.start();
 
     const Time& runTime = mesh_.time();
     const scalar deltaT = runTime.deltaTValue();
@@ -360,8 +370,10 @@ void Foam::polymer::polymerCloud::evolve()
     }
 
     injectChains(time);
+    pathTimes_.lap(pathTimes::inject);
     stepper_->start();
     updateDrift();
+    pathTimes_.lap(pathTimes::locate);
 
     // The flow's step in nCycles polymer steps (solution's
     // maxNeighbourDisplacement), each from the fluid velocity and forces
@@ -373,6 +385,7 @@ void Foam::polymer::polymerCloud::evolve()
         {
             stepper_->start();
             updateDrift();
+            pathTimes_.lap(pathTimes::locate);
         }
         stepper_->setSubCycle(nCycles, cycle);
         evolvePolymerStep
@@ -390,6 +403,7 @@ void Foam::polymer::polymerCloud::evolve()
     {
         function.postEvolve();
     }
+    pathTimes_.lap(pathTimes::functions);
 }
 
 

@@ -275,6 +275,7 @@ bool Foam::polymer::polymerCloud::writeObject
     const bool valid
 ) const
 {
+    pathTimes_.start();
     const unsigned int oldPrecision =
         IOstream::defaultPrecision(max(17u, IOstream::defaultPrecision()));
 
@@ -324,7 +325,9 @@ bool Foam::polymer::polymerCloud::writeObject
         function.write();
     }
 
-    return ok && cloud::writeObject(fmt, ver, cmp, valid);
+    const bool written = ok && cloud::writeObject(fmt, ver, cmp, valid);
+    pathTimes_.lap(pathTimes::write);
+    return written;
 }
 
 

@@ -121,6 +121,7 @@ void Foam::polymer::polymerCloud::writeReport(Ostream& os) const
         os  << ", " << beadSteps/seconds << " bead-steps/s";
     }
     os  << nl;
+    pathTimes_.writeReport(os);
     for (const polymerSubModel& model : models_)
     {
         model.writeReport(os);
