@@ -160,6 +160,102 @@ bool Foam::polymer::cellLocator::inCell
 }
 
 
+Foam::label Foam::polymer::cellLocator::exitFace
+(
+    const point& p,
+    const label celli,
+    bool& inside
+) const
+{
+    const vectorField& faceCentres = mesh().faceCentres();
+    const vectorField& faceAreas = mesh().faceAreas();
+    const labelList& owner = mesh().faceOwner();
+    const point& centre = mesh().cellCentres()[celli];
+    const vector toP(p - centre);
+
+    // The face plane the ray centre + t (p - centre) meets first, t > 0:
+    // t = reach/along, compared without dividing (along > 0)
+    label exit = -1;
+    scalar exitReach = 1, exitAlong = 0;
+    for (const label facei : mesh().cells()[celli])
+    {
+        const vector outward =
+            (owner[facei] == celli) ? faceAreas[facei] : -faceAreas[facei];
+        const scalar along = toP & outward;
+        if (along > 0)
+        {
+            const scalar reach = (faceCentres[facei] - centre) & outward;
+            if (exit < 0 || reach*exitAlong < exitReach*along)
+            {
+                exitReach = reach;
+                exitAlong = along;
+                exit = facei;
+            }
+        }
+    }
+    inside = exitReach >= exitAlong;
+    return exit;
+}
+
+
+bool Foam::polymer::cellLocator::inFan
+(
+    const point& p,
+    const label celli,
+    const label facei,
+    tetIndices& tet,
+    barycentric& coordinates
+) const
+{
+    const label nTets = mesh().faces()[facei].size() - 2;
+    for (label tetPti = 1; tetPti <= nTets; ++tetPti)
+    {
+        const tetIndices candidate(celli, facei, tetPti);
+        if (inTet(mesh(), p, candidate, coordinates))
+        {
+            tet = candidate;
+            return true;
+        }
+    }
+    return false;
+}
+
+
+Foam::label Foam::polymer::cellLocator::rayWalk
+(
+    const point& p,
+    label celli,
+    tetIndices& tet,
+    barycentric& coordinates
+) const
+{
+    // Along the ray from each cell's centre to p: p is in the tets on the
+    // face the ray leaves by, or beyond that face in the neighbour's. On
+    // convex cells one or two tet tests; anything else (a non-convex or
+    // warped cell, a boundary face, a long walk) is left to the walk
+    for (label stepi = 0; stepi < 16; ++stepi)
+    {
+        bool inside = false;
+        const label facei = exitFace(p, celli, inside);
+        if (facei < 0)
+        {
+            return -1;
+        }
+        if (inside)
+        {
+            return inFan(p, celli, facei, tet, coordinates) ? celli : -1;
+        }
+        if (!mesh().isInternalFace(facei))
+        {
+            return -1;
+        }
+        const label owner = mesh().faceOwner()[facei];
+        celli = (owner == celli) ? mesh().faceNeighbour()[facei] : owner;
+    }
+    return -1;
+}
+
+
 Foam::label Foam::polymer::cellLocator::walk
 (
     const point& p,
@@ -276,13 +372,27 @@ Foam::tetIndices Foam::polymer::cellLocator::findTet
 ) const
 {
     tetIndices tet(previous);
-    if
-    (
-        previous.cell() >= 0
-     && walk(p, previous.cell(), tet, coordinates) >= 0
-    )
+    if (previous.cell() >= 0)
     {
-        return tet;
+        // Most beads are still in the tet that held them; of the others,
+        // most are found along the ray from their cell's centre
+        if
+        (
+            isTetOf(mesh(), previous, previous.cell())
+         && inTet(mesh(), p, previous, coordinates)
+        )
+        {
+            return tet;
+        }
+        if (rayWalk(p, previous.cell(), tet, coordinates) >= 0)
+        {
+            return tet;
+        }
+        tet = previous;
+        if (walk(p, previous.cell(), tet, coordinates) >= 0)
+        {
+            return tet;
+        }
     }
 
     // The tree gives the cell; its tet is searched again (rare: a first
