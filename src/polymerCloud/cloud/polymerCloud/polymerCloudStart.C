@@ -261,7 +261,13 @@ void Foam::polymer::polymerCloud::selectModels(const dictionary& subModels)
             constraint_()
         )
     );
-    if (solution_.reproject())
+    // Without collisions and walls no contact leaves a rod off: a chain
+    // the constraint leaves off is its own (sub-stepped on failure)
+    if
+    (
+        solution_.reproject()
+     && (collision_->type() != "none" || wall_->active())
+    )
     {
         contactProjection_.reset
         (
