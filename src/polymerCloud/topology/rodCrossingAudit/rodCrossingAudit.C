@@ -11,6 +11,10 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rodCrossingAudit.H"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
 #include "boundBox.H"
 #include "DynamicList.H"
 
@@ -57,6 +61,110 @@ inline vec at(const vec& a, const vec& b, const real t)
 
 
 } // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Private Classes * * * * * * * * * * * * * * //
+
+// The rods' swept boxes in a uniform grid over their bounds (cells of the
+// widest box's span, at most eight a rod): the rods near a box, each once
+class Foam::polymer::rodCrossingAudit::boxGrid
+{
+    const Foam::UList<Foam::boundBox>& boxes_;
+    Foam::boundBox region_;
+    Foam::scalar cellSize_;
+    Foam::label n_[3];
+    std::vector<std::vector<Foam::label>> cells_;
+    mutable std::vector<Foam::label> stamp_;
+    mutable Foam::label query_;
+
+    void range(const Foam::boundBox& box, Foam::label lo[3], Foam::label hi[3])
+    const
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            const Foam::scalar o = region_.min()[d];
+            lo[d] = std::min<Foam::label>
+            (
+                std::max<Foam::label>(std::floor((box.min()[d] - o)/cellSize_), 0),
+                n_[d] - 1
+            );
+            hi[d] = std::min<Foam::label>
+            (
+                std::max<Foam::label>(std::floor((box.max()[d] - o)/cellSize_), 0),
+                n_[d] - 1
+            );
+        }
+    }
+
+public:
+
+    explicit boxGrid(const Foam::UList<Foam::boundBox>& boxes)
+    :
+        boxes_(boxes),
+        region_(Foam::boundBox::invertedBox),
+        cellSize_(Foam::VSMALL),
+        n_{1, 1, 1},
+        cells_(),
+        stamp_(boxes.size(), -1),
+        query_(0)
+    {
+        for (const Foam::boundBox& box : boxes)
+        {
+            region_.add(box);
+            cellSize_ = std::max(cellSize_, Foam::cmptMax(box.span()));
+        }
+        if (boxes.empty())
+        {
+            region_ = Foam::boundBox(Foam::Zero, Foam::Zero);
+        }
+        const Foam::vector span(region_.span());
+        const double maxCells = std::max<double>(64, 8.0*boxes.size());
+        cellSize_ =
+            std::max(cellSize_, Foam::cmptMax(span)/std::cbrt(maxCells));
+        for (;;)
+        {
+            for (int d = 0; d < 3; ++d)
+            {
+                n_[d] = Foam::label(span[d]/cellSize_) + 1;
+            }
+            if (double(n_[0])*n_[1]*n_[2] <= maxCells)
+            {
+                break;
+            }
+            cellSize_ *= 1.25;
+        }
+        cells_.resize(n_[0]*n_[1]*n_[2]);
+        forAll(boxes, rodi)
+        {
+            Foam::label lo[3], hi[3];
+            range(boxes[rodi], lo, hi);
+            for (Foam::label i = lo[0]; i <= hi[0]; ++i)
+                for (Foam::label j = lo[1]; j <= hi[1]; ++j)
+                    for (Foam::label k = lo[2]; k <= hi[2]; ++k)
+                        cells_[(i*n_[1] + j)*n_[2] + k].push_back(rodi);
+        }
+    }
+
+    // Call op(rod) once for each rod sharing a cell with box
+    template<class Op>
+    void forNear(const Foam::boundBox& box, const Op& op) const
+    {
+        ++query_;
+        Foam::label lo[3], hi[3];
+        range(box, lo, hi);
+        for (Foam::label i = lo[0]; i <= hi[0]; ++i)
+            for (Foam::label j = lo[1]; j <= hi[1]; ++j)
+                for (Foam::label k = lo[2]; k <= hi[2]; ++k)
+                    for (const Foam::label rodi : cells_[(i*n_[1] + j)*n_[2] + k])
+                    {
+                        if (stamp_[rodi] != query_)
+                        {
+                            stamp_[rodi] = query_;
+                            op(rodi);
+                        }
+                    }
+    }
+};
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -380,34 +488,21 @@ Foam::polymer::rodCrossingAudit::check
         }
     };
 
-    // Sweep along x: the boxes sorted by their lower x bound
-    labelList order(rods_.size());
-    forAll(order, i)
+    // Candidates from a grid of the boxes: each pair once
+    const boxGrid grid(boxes);
+    forAll(rods_, a)
     {
-        order[i] = i;
-    }
-    std::sort
-    (
-        order.begin(),
-        order.end(),
-        [&](const label a, const label b)
-        {
-            return boxes[a].min().x() < boxes[b].min().x();
-        }
-    );
-
-    forAll(order, oi)
-    {
-        const label a = order[oi];
-        for (label oj = oi + 1; oj < order.size(); ++oj)
-        {
-            const label b = order[oj];
-            if (boxes[b].min().x() > boxes[a].max().x())
+        grid.forNear
+        (
+            boxes[a],
+            [&](const label b)
             {
-                break;
+                if (b > a)
+                {
+                    checkIfNear(a, b);
+                }
             }
-            checkIfNear(a, b);
-        }
+        );
     }
 
     // The images, where the rods' box meets its translate
@@ -420,7 +515,7 @@ Foam::polymer::rodCrossingAudit::check
     {
         if (all.overlaps(boundBox(all.min() + shift, all.max() + shift)))
         {
-            checkImages(shift, boxes, moves, order, path, found);
+            checkImages(shift, boxes, moves, grid, path, found);
         }
     }
     return List<crossing>(std::move(found));
@@ -432,46 +527,45 @@ void Foam::polymer::rodCrossingAudit::checkImages
     const vector& shift,
     const UList<boundBox>& boxes,
     const boolList& moves,
-    const labelUList& order,
+    const boxGrid& grid,
     const UList<List<point>>& path,
     DynamicList<crossing>& found
 ) const
 {
-    // The boxes' lower x bounds in sweep order, and their widest x extent
-    scalarList lowerX(order.size());
-    scalar width = 0;
-    forAll(order, oi)
-    {
-        lowerX[oi] = boxes[order[oi]].min().x();
-        width = max(width, boxes[order[oi]].span().x());
-    }
-
     // Every ordered pair (a, image of b): (b, image of a by -shift) is the
     // same pair, and -shift is not listed. A rod's own image is its
-    // translate, parallel to it: it cannot cross it.
+    // translate, parallel to it: it cannot cross it. The grid is asked
+    // with a's box moved back by shift, a little larger than round-off
     forAll(rods_, a)
     {
         const boundBox& boxA = boxes[a];
-        const label first = std::lower_bound
+        const vector margin
         (
-            lowerX.begin(), lowerX.end(), boxA.min().x() - width - shift.x()
-        ) - lowerX.begin();
-        for (label oj = first; oj < order.size(); ++oj)
-        {
-            if (lowerX[oj] + shift.x() > boxA.max().x())
-            {
-                break;
-            }
-            const label b = order[oj];
-            const boundBox imageB
+            vector::uniform
             (
-                boxes[b].min() + shift, boxes[b].max() + shift
-            );
-            if (b != a && (moves[a] || moves[b]) && boxA.overlaps(imageB))
+                1e-9*(cmptMax(cmptMag(boxA.max())) + mag(shift))
+              + VSMALL
+            )
+        );
+        const boundBox query
+        (
+            boxA.min() - shift - margin, boxA.max() - shift + margin
+        );
+        grid.forNear
+        (
+            query,
+            [&](const label b)
             {
-                checkPair(rods_[a], rods_[b], shift, path, found);
+                const boundBox imageB
+                (
+                    boxes[b].min() + shift, boxes[b].max() + shift
+                );
+                if (b != a && (moves[a] || moves[b]) && boxA.overlaps(imageB))
+                {
+                    checkPair(rods_[a], rods_[b], shift, path, found);
+                }
             }
-        }
+        );
     }
 }
 
