@@ -1,0 +1,100 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "boxGrid.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::polymer::boxGrid::range
+(
+    const boundBox& box,
+    FixedList<label, 3>& lower,
+    FixedList<label, 3>& upper
+) const
+{
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        const scalar origin = region_.min()[d];
+        lower[d] = min
+        (
+            max(label(std::floor((box.min()[d] - origin)/cellSize_)), 0),
+            nCells_[d] - 1
+        );
+        upper[d] = min
+        (
+            max(label(std::floor((box.max()[d] - origin)/cellSize_)), 0),
+            nCells_[d] - 1
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::polymer::boxGrid::boxGrid(const UList<boundBox>& boxes)
+:
+    region_(boundBox::invertedBox),
+    cellSize_(VSMALL),
+    nCells_(label(1)),
+    cells_(),
+    stamp_(boxes.size(), -1),
+    query_(0)
+{
+    for (const boundBox& box : boxes)
+    {
+        region_.add(box);
+        cellSize_ = max(cellSize_, cmptMax(box.span()));
+    }
+    if (boxes.empty())
+    {
+        region_ = boundBox(Zero, Zero);
+    }
+
+    // The widest box's span, coarsened to at most eight cells a box
+    const vector span(region_.span());
+    const scalar maxCells = max(64, 8*boxes.size());
+    cellSize_ = max(cellSize_, cmptMax(span)/std::cbrt(maxCells));
+    for (;;)
+    {
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            nCells_[d] = label(span[d]/cellSize_) + 1;
+        }
+        if (scalar(nCells_[0])*nCells_[1]*nCells_[2] <= maxCells)
+        {
+            break;
+        }
+        cellSize_ *= 1.25;
+    }
+
+    cells_.resize(nCells_[0]*nCells_[1]*nCells_[2]);
+    forAll(boxes, boxi)
+    {
+        FixedList<label, 3> lower, upper;
+        range(boxes[boxi], lower, upper);
+        for (label i = lower[0]; i <= upper[0]; ++i)
+        {
+            for (label j = lower[1]; j <= upper[1]; ++j)
+            {
+                for (label k = lower[2]; k <= upper[2]; ++k)
+                {
+                    cells_[(i*nCells_[1] + j)*nCells_[2] + k].push_back(boxi);
+                }
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,58 @@
+/*---------------------------------------------------------------------------*\
+Description
+    The broad phase of the topology audit (boxGrid): for 2000 random boxes
+    packed along a long, thin region and random query boxes, inside and
+    beyond the grid, every box that overlaps the query is visited, and no
+    box twice.
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "boxGrid.H"
+
+#include <random>
+
+using namespace Foam;
+using namespace Foam::polymer;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+TEST(boxGrid, VisitsEveryOverlappingBoxOnce)
+{
+    std::mt19937_64 engine(3);
+    std::uniform_real_distribution<scalar> u(0, 1);
+    const auto randomBox = [&](const scalar length)
+    {
+        const point p(length*u(engine), 4*u(engine), u(engine));
+        const vector size(0.02 + 0.8*u(engine), 0.8*u(engine), 0.8*u(engine));
+        return boundBox(p, p + size);
+    };
+
+    List<boundBox> boxes(2000);
+    for (boundBox& box : boxes)
+    {
+        box = randomBox(40);
+    }
+    const boxGrid grid(boxes);
+
+    label overlaps = 0;
+    for (label q = 0; q < 500; ++q)
+    {
+        // Some queries reach beyond the grid (x up to 60)
+        const boundBox query(randomBox(60));
+        labelList visits(boxes.size(), Zero);
+        grid.forNear(query, [&](const label boxi) { ++visits[boxi]; });
+        forAll(boxes, boxi)
+        {
+            ASSERT_LE(visits[boxi], 1);
+            if (boxes[boxi].overlaps(query))
+            {
+                ++overlaps;
+                ASSERT_EQ(visits[boxi], 1) << "box " << boxi << " query " << q;
+            }
+        }
+    }
+    EXPECT_GT(overlaps, 1000);
+}
+
+
+// ************************************************************************* //
