@@ -157,7 +157,16 @@ void Foam::polymer::polymerCloud::writeReport(Ostream& os) const
         << nBeadsOutside() << " (checked every step: at most "
         << returnReduce(stepper_->maxBeadsOutside(), maxOp<label>()) << " in a step, "
         << returnReduce(stepper_->beadStepsOutside(), sumOp<scalar>())
-        << " bead-steps in all)" << nl;
+        << " bead-steps in all)";
+    if (coupling_->twoWay())
+    {
+        os  << "; momentum they could not give the solvent "
+            << returnReduce(coupling_->momentumLost(), sumOp<vector>())
+            << " in "
+            << returnReduce(coupling_->beadStepsLost(), sumOp<scalar>())
+            << " bead-steps";
+    }
+    os  << nl;
 }
 
 

@@ -186,7 +186,9 @@ Foam::polymer::polymerCoupling::polymerCoupling
         mesh,
         dimensionedScalar(dimVolume, Zero)
     ),
-    exchangeSeconds_(0)
+    exchangeSeconds_(0),
+    momentumLost_(Zero),
+    beadStepsLost_(0)
 {
     if (flow.solvesFlow())
     {
@@ -261,6 +263,12 @@ void Foam::polymer::polymerCoupling::deposit
                     );
                     remoteTransfer[proci].append(transfer);
                     remoteCoeff[proci].append(coeff);
+                }
+                else
+                {
+                    // In no mesh: no cell to take it, but not forgotten
+                    momentumLost_ += transfer;
+                    ++beadStepsLost_;
                 }
                 continue;
             }
