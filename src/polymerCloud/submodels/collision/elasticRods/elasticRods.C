@@ -89,6 +89,9 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     wall_(nullptr),
     projection_(),
     changedBeads_(),
+    rodStamp_(),
+    repredictions_(0),
+    rodsToPredict_(),
     frozenChains_(),
     heldChains_()
 {}
@@ -301,6 +304,71 @@ void Foam::polymer::collisionModels::elasticRods::repredict
 }
 
 
+void Foam::polymer::collisionModels::elasticRods::repredict
+(
+    const labelUList& beads,
+    const scalar t,
+    const scalar dt
+)
+{
+    rodStamp_.resize(rods_.size(), 0);
+    if (++repredictions_ == labelMax)
+    {
+        std::fill(rodStamp_.begin(), rodStamp_.end(), 0);
+        repredictions_ = 1;
+    }
+    rodsToPredict_.clear();
+    for (const label bead : beads)
+    {
+        for (const label rod : rods_.beadRods(bead))
+        {
+            if (rod >= 0 && rodStamp_[rod] != repredictions_)
+            {
+                rodStamp_[rod] = repredictions_;
+                rodsToPredict_.append(rod);
+            }
+        }
+    }
+
+    // Grow the broad phase where the new paths leave the rods' boxes
+    const bool edges = wall_ && wallEdges_ && wall_->edges().size();
+    for (const label rod : rodsToPredict_)
+    {
+        const boundBox box(sweep(rod, t, dt));
+        grid_.grow(rod, box);
+        if (edges)
+        {
+            predictEdges(rod, box, t, dt);
+        }
+    }
+
+    // A pair of two re-predicted rods from its first rod only
+    for (const label rod : rodsToPredict_)
+    {
+        for (const label pairi : grid_.rodPairs(rod))
+        {
+            const labelPair& pair = grid_.pairs()[pairi];
+            if
+            (
+                pair.first() == rod
+             || rodStamp_[pair.first()] != repredictions_
+            )
+            {
+                predict(pairi, t, dt);
+            }
+        }
+    }
+
+    if (wall_)
+    {
+        for (const label bead : beads)
+        {
+            predictWall(bead, t, dt);
+        }
+    }
+}
+
+
 void Foam::polymer::collisionModels::elasticRods::resolveWall
 (
     const event& e,
@@ -495,10 +563,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
             if (resolveEdge(e, chains, vDagger))
             {
                 ++counters_.edgeContacts;
-                for (const label bead : changedBeads_)
-                {
-                    repredict(bead, now, deltaT);
-                }
+                repredict(changedBeads_, now, deltaT);
             }
             else
             {
@@ -511,10 +576,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
         {
             ++nWallEvents;
             resolveWall(e, chains, vDagger);
-            for (const label bead : changedBeads_)
-            {
-                repredict(bead, now, deltaT);
-            }
+            repredict(changedBeads_, now, deltaT);
             continue;
         }
 
@@ -546,10 +608,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
         }
 
         // Re-predict every event of the beads whose course changed
-        for (const label bead : changedBeads_)
-        {
-            repredict(bead, now, deltaT);
-        }
+        repredict(changedBeads_, now, deltaT);
     }
 
     // x^{n+1}: the end of the paths (held chains stay where they were
