@@ -116,44 +116,27 @@ Foam::boundBox Foam::polymer::collisionModels::elasticRods::sweep
 
 bool Foam::polymer::collisionModels::elasticRods::sweptApart
 (
-    const label pairi,
-    const scalar t,
-    const scalar dt
-) const
+    const FixedList<point, 4>& x,
+    const FixedList<vector, 4>& moved
+)
 {
-    const labelPair& rodPair = grid_.pairs()[pairi];
-    const vector& shift = grid_.pairShift(pairi);
-    const labelPair& rodA = rods_[rodPair.first()];
-    const labelPair& rodB = rods_[rodPair.second()];
-
-    const FixedList<point, 4> x
-    ({
-        positionAt(rodA.first(), t),
-        positionAt(rodA.second(), t),
-        positionAt(rodB.first(), t) + shift,
-        positionAt(rodB.second(), t) + shift
-    });
-    const FixedList<vector, 4> moved
-    ({
-        (dt - t)*velocity_[rodA.first()],
-        (dt - t)*velocity_[rodA.second()],
-        (dt - t)*velocity_[rodB.first()],
-        (dt - t)*velocity_[rodB.second()]
-    });
     const scalar margin = 1e-4*(mag(x[1] - x[0]) + mag(x[3] - x[2]));
 
-    // Swept boxes apart
+    // Swept boxes apart: the extent of rod k's (beads 2k, 2k+1) paths
+    const auto extent = [&](const label k, const direction d)
+    {
+        const scalar p0 = x[2*k][d], p1 = x[2*k + 1][d];
+        const scalar q0 = p0 + moved[2*k][d], q1 = p1 + moved[2*k + 1][d];
+        return std::make_pair
+        (
+            min(min(p0, p1), min(q0, q1)), max(max(p0, p1), max(q0, q1))
+        );
+    };
     for (direction d = 0; d < vector::nComponents; ++d)
     {
-        const scalar lowA =
-            min(min(x[0][d], x[1][d]), min(x[0][d] + moved[0][d], x[1][d] + moved[1][d]));
-        const scalar highA =
-            max(max(x[0][d], x[1][d]), max(x[0][d] + moved[0][d], x[1][d] + moved[1][d]));
-        const scalar lowB =
-            min(min(x[2][d], x[3][d]), min(x[2][d] + moved[2][d], x[3][d] + moved[3][d]));
-        const scalar highB =
-            max(max(x[2][d], x[3][d]), max(x[2][d] + moved[2][d], x[3][d] + moved[3][d]));
-        if (lowA > highB + margin || lowB > highA + margin)
+        const std::pair<scalar, scalar> a = extent(0, d);
+        const std::pair<scalar, scalar> b = extent(1, d);
+        if (a.first > b.second + margin || b.first > a.second + margin)
         {
             return true;
         }
@@ -184,16 +167,6 @@ void Foam::polymer::collisionModels::elasticRods::predict
     const scalar dt
 )
 {
-    // A crossing is a point of both rods at one time: rods that stay
-    // apart need no crossing-time solve. The margin is far
-    // beyond the round-off of the lines' distance at a crossing the root
-    // solvers place (they accept one with the rods' closest points inside
-    // both rods, at an angle of at least 1e-6)
-    if (sweptApart(pairi, t, dt))
-    {
-        return;
-    }
-
     const labelPair& rodPair = grid_.pairs()[pairi];
     const label a0 = rods_[rodPair.first()].first();
     const label a1 = rods_[rodPair.first()].second();
@@ -201,11 +174,30 @@ void Foam::polymer::collisionModels::elasticRods::predict
     const label b1 = rods_[rodPair.second()].second();
     const vector& shift = grid_.pairShift(pairi);
 
+    const FixedList<point, 4> x
+    ({
+        positionAt(a0, t), positionAt(a1, t),
+        positionAt(b0, t) + shift, positionAt(b1, t) + shift
+    });
+    const FixedList<vector, 4> v
+    ({
+        velocity_[a0], velocity_[a1], velocity_[b0], velocity_[b1]
+    });
+
+    // A crossing is a point of both rods at one time: rods that stay
+    // apart need no crossing-time solve. The margin is far beyond the
+    // round-off of the lines' distance at a crossing the root solvers
+    // place (they accept one with the rods' closest points inside both
+    // rods, at an angle of at least 1e-6)
+    const scalar rest = dt - t;
+    if (sweptApart(x, {rest*v[0], rest*v[1], rest*v[2], rest*v[3]}))
+    {
+        return;
+    }
+
     const rodPairCrossing pair
     (
-        positionAt(a0, t), positionAt(a1, t),
-        positionAt(b0, t) + shift, positionAt(b1, t) + shift,
-        velocity_[a0], velocity_[a1], velocity_[b0], velocity_[b1]
+        x[0], x[1], x[2], x[3], v[0], v[1], v[2], v[3]
     );
 
     label side = 0;
@@ -267,39 +259,6 @@ void Foam::polymer::collisionModels::elasticRods::predictWall
         e.atContact = false;
         e.beads = FixedList<label, 4>({bead, -1, -1, -1});
         queue_.push(e);
-    }
-}
-
-
-void Foam::polymer::collisionModels::elasticRods::repredict
-(
-    const label bead,
-    const scalar t,
-    const scalar dt
-)
-{
-    // Grow the broad phase where the new paths leave the rods' boxes
-    for (const label rod : rods_.beadRods(bead))
-    {
-        if (rod < 0)
-        {
-            continue;
-        }
-        const boundBox box(sweep(rod, t, dt));
-        grid_.grow(rod, box);
-        for (const label pairi : grid_.rodPairs(rod))
-        {
-            predict(pairi, t, dt);
-        }
-        if (wall_ && wallEdges_ && wall_->edges().size())
-        {
-            predictEdges(rod, box, t, dt);
-        }
-    }
-
-    if (wall_)
-    {
-        predictWall(bead, t, dt);
     }
 }
 

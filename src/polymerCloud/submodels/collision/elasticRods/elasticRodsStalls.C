@@ -40,10 +40,7 @@ void Foam::polymer::collisionModels::elasticRods::holdChain
 
     // The chain's rods have new (null) paths: the moving chains' events
     // with them are predicted again; a held bead meets no wall
-    for (label i = first; i < end; ++i)
-    {
-        repredict(i, t, dt);
-    }
+    repredict(identity(end - first, first), t, dt);
 }
 
 
