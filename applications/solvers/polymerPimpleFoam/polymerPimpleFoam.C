@@ -49,6 +49,7 @@ Description
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "polymerCloud.H"
+#include "writeStatus.H"
 #include "progressReport.H"
 
 using namespace Foam::polymer;
@@ -65,7 +66,13 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+
+    // A restart never reads half a state: incomplete latest times are
+    // moved aside (or stop the run) before the Time selects its start
+    polymer::writeStatus::selectComplete(args);
     #include "createTime.H"
+    polymer::writeStatus writes(runTime);
+
     #include "createMesh.H"
 
     polymerCloud polymers("polymerCloud", mesh);

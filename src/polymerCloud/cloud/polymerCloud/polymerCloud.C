@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "polymerCloud.H"
+#include "writeStatus.H"
 #include "OStringStream.H"
 #include "Tuple2.H"
 #include "checkedInput.H"
@@ -214,10 +215,14 @@ Foam::polymer::polymerCloud::polymerCloud
     readCloudFunctions();
 
     // The starting configuration is part of the record (and of the VTK
-    // series), and a later run from the start time reads it back
+    // series), and a later run from the start time reads it back: marked
+    // complete once written, as a run may be stopped while writing it
     if (!restart)
     {
+        const fileName local(cloud::prefix/name());
+        writeStatus::mark(mesh_.time(), local, "started");
         write();
+        writeStatus::mark(mesh_.time(), local, "complete");
     }
 }
 

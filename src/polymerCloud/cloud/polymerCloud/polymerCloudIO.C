@@ -28,10 +28,11 @@ Description
 
 #include "polymerCloud.H"
 #include "checkedInput.H"
+#include "writeStatus.H"
 #include "IOField.H"
 #include "IOdictionary.H"
 #include "IFstream.H"
-#include "OFstream.H"
+#include "fileOperation.H"
 #include "OSspecific.H"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
@@ -63,6 +64,27 @@ bool Foam::polymer::polymerCloud::savedCloudExists(const fileName& dir)
 Foam::fileName Foam::polymer::polymerCloud::savedCloudDir() const
 {
     return mesh_.time().timePath()/cloud::prefix/name();
+}
+
+
+bool Foam::polymer::polymerCloud::savedCloudIsComplete() const
+{
+    const fileName dir(savedCloudDir());
+    const bool saved = savedCloudExists(dir);
+    const word status(saved ? writeStatus::status(dir) : word::null);
+    const bool incomplete = saved && !status.empty() && status != "complete";
+
+    if (returnReduce(incomplete, orOp<bool>()))
+    {
+        WarningInFunction
+            << "The chains saved in "
+            << mesh_.time().timeName()/cloud::prefix/name()
+            << " at the start of an earlier run were not completely written"
+            << " (the run was stopped while writing them): starting them"
+            << " anew with the initialisation, as they were" << endl;
+        return false;
+    }
+    return returnReduce(saved, orOp<bool>());
 }
 
 
@@ -246,7 +268,9 @@ void Foam::polymer::polymerCloud::writePositions() const
     const IOobject io(fieldIOobject("positions", IOobject::NO_READ));
     mkDir(io.path());
 
-    OFstream os(io.objectPath());
+    // Through the file handler, as the cloud's fields are
+    autoPtr<Ostream> osPtr(fileHandler().NewOFstream(io.objectPath()));
+    Ostream& os = osPtr();
     io.writeHeader(os, "Cloud<passiveParticle>");
 
     const List<vector>& x = chains_.positions();

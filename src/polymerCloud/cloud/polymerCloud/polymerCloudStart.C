@@ -384,8 +384,7 @@ bool Foam::polymer::polymerCloud::startChains(const dictionary& subModels)
     // Every processor of a parallel run restarts, or none does; a parallel
     // run may continue a serial one from the undecomposed case's chains
     // (decomposePar carries no chains), every processor keeping its own
-    const bool restart =
-        returnReduce(savedCloudExists(savedCloudDir()), orOp<bool>());
+    const bool restart = savedCloudIsComplete();
     const bool fromUndecomposed =
         !restart && Pstream::parRun()
      && returnReduce
