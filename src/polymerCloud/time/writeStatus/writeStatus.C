@@ -132,6 +132,61 @@ bool Foam::polymer::writeStatus::complete(const fileName& timeDir)
 }
 
 
+void Foam::polymer::writeStatus::checkTimePrecision
+(
+    const dictionary& controlDict,
+    const instant& start
+)
+{
+    if (controlDict.getOrDefault<word>("timeFormat", "general") != "general")
+    {
+        return;
+    }
+    const label precision =
+        controlDict.getOrDefault<label>("timePrecision", 6);
+
+    // v1912's search (Time::setControls): from the most digits
+    // (Time::maxPrecision_) down, stopping where two numbers of digits
+    // give the same name
+    const label maxDigits = 3 - log10(SMALL);
+    word previous(Time::timeName(start.value(), precision));
+    bool found = (previous == start.name());
+    for (label digits = maxDigits; !found && digits > precision; --digits)
+    {
+        const word name(Time::timeName(start.value(), digits));
+        if (name == previous)
+        {
+            break;
+        }
+        previous = name;
+        found = (name == start.name());
+    }
+    if (found)
+    {
+        return;
+    }
+
+    label needed = precision + 1;
+    while
+    (
+        needed < maxDigits
+     && Time::timeName(start.value(), needed) != start.name()
+    )
+    {
+        ++needed;
+    }
+    FatalIOErrorInFunction(controlDict)
+        << "The latest time directory, " << start.name() << ", is named with"
+        << " more digits than timePrecision " << precision << " gives ("
+        << Time::timeName(start.value(), precision) << "), as the time step"
+        << " adjusted by maxCo makes, and OpenFOAM v1912 would not find it:"
+        << " the run would start without its fields and chains" << nl
+        << "    expected: timePrecision " << needed << "; (or more) in "
+        << controlDict.name()
+        << exit(FatalIOError);
+}
+
+
 void Foam::polymer::writeStatus::selectComplete(const argList& args)
 {
     const fileName dictFile(args.globalPath()/"system"/"controlDict");
@@ -141,7 +196,11 @@ void Foam::polymer::writeStatus::selectComplete(const argList& args)
         return;     // the Time reports it
     }
     const dictionary controlDict(is);
-    if (controlDict.getOrDefault<word>("startFrom", "latestTime") != "latestTime")
+    const word startFrom
+    (
+        controlDict.getOrDefault<word>("startFrom", "latestTime")
+    );
+    if (startFrom != "latestTime")
     {
         return;
     }
@@ -164,6 +223,14 @@ void Foam::polymer::writeStatus::selectComplete(const argList& args)
         // The only time of a processor may be an empty directory (its
         // initial conditions): incomplete only if marked so
         const bool haveLatest = !times.empty() && mine == latest;
+
+        // Its name as the directory has it (the master's, which has it
+        // unless the run was stopped before the master made it)
+        word latestName
+        (
+            haveLatest ? times.last().name() : Time::timeName(latest)
+        );
+        Pstream::scatter(latestName);
         const fileName dir(haveLatest ? args.path()/times.last().name() : "");
         const bool completeHere =
             haveLatest
@@ -173,6 +240,7 @@ void Foam::polymer::writeStatus::selectComplete(const argList& args)
             );
         if (returnReduce(completeHere, andOp<bool>()))
         {
+            checkTimePrecision(controlDict, times.last());
             return;
         }
 
@@ -181,7 +249,7 @@ void Foam::polymer::writeStatus::selectComplete(const argList& args)
         if (action == incompleteAction::stop)
         {
             FatalIOErrorInFunction(controlDict)
-                << "The latest time, " << latest << ", was not completely"
+                << "The latest time, " << latestName << ", was not completely"
                 << " written (a run stopped while writing it) on "
                 << nIncomplete << " of " << Pstream::nProcs()
                 << " processor(s)" << nl
@@ -209,7 +277,7 @@ void Foam::polymer::writeStatus::selectComplete(const argList& args)
         Pstream::scatter(target);
 
         WarningInFunction
-            << "The latest time, " << latest << ", was not completely written"
+            << "The latest time, " << latestName << ", was not completely written"
             << " (a run stopped while writing it) on " << nIncomplete
             << " of " << Pstream::nProcs() << " processor(s): moved aside"
             << " to " << target << (Pstream::parRun() ? " on each" : "")
