@@ -422,4 +422,26 @@ void Foam::polymer::chainDistribution::update()
 }
 
 
+void Foam::polymer::chainDistribution::writeRunTotals(dictionary& dict) const
+{
+    dictionary& totals = dict.subDictOrAdd("chains");
+    runTotals::add(totals, "moved", returnReduce(nMoved_, sumOp<label>()));
+    runTotals::add
+    (
+        totals, "wrapped", returnReduce(nWrapped_, sumOp<label>())
+    );
+}
+
+
+void Foam::polymer::chainDistribution::readRunTotals(const dictionary& dict)
+{
+    const dictionary* saved = dict.findDict("chains");
+    if (saved)
+    {
+        runTotals::read(*saved, "moved", nMoved_);
+        runTotals::read(*saved, "wrapped", nWrapped_);
+    }
+}
+
+
 // ************************************************************************* //

@@ -444,4 +444,46 @@ void Foam::polymer::chainStepper::restoreStart()
 }
 
 
+void Foam::polymer::chainStepper::writeRunTotals(dictionary& dict) const
+{
+    dictionary& totals = dict.subDictOrAdd("steps");
+    runTotals::add(totals, "flowSteps", flowSteps_);
+    runTotals::add(totals, "subCycledSteps", subCycledSteps_);
+    runTotals::add(totals, "subCycleSteps", subCycleSteps_);
+    runTotals::add
+    (
+        totals, "largestSubCycles",
+        returnReduce(largestSubCycles_, maxOp<label>())
+    );
+    runTotals::add(totals, "cappedSteps", cappedSteps_);
+    runTotals::add
+    (
+        totals, "maxBeadsOutside",
+        returnReduce(maxBeadsOutside_, maxOp<label>())
+    );
+    runTotals::add
+    (
+        totals, "beadStepsOutside",
+        returnReduce(beadStepsOutside_, sumOp<scalar>())
+    );
+}
+
+
+void Foam::polymer::chainStepper::readRunTotals(const dictionary& dict)
+{
+    const dictionary* saved = dict.findDict("steps");
+    if (!saved)
+    {
+        return;
+    }
+    runTotals::read(*saved, "flowSteps", flowSteps_);
+    runTotals::read(*saved, "subCycledSteps", subCycledSteps_);
+    runTotals::read(*saved, "subCycleSteps", subCycleSteps_);
+    runTotals::read(*saved, "largestSubCycles", largestSubCycles_);
+    runTotals::read(*saved, "cappedSteps", cappedSteps_);
+    runTotals::read(*saved, "maxBeadsOutside", maxBeadsOutside_);
+    runTotals::read(*saved, "beadStepsOutside", beadStepsOutside_);
+}
+
+
 // ************************************************************************* //

@@ -493,4 +493,40 @@ void Foam::polymer::contactProjection::writeReport(Ostream& os) const
 }
 
 
+void Foam::polymer::contactProjection::writeRunTotals(dictionary& dict) const
+{
+    dictionary& totals = dict.subDictOrAdd("reprojection");
+    runTotals::add(totals, "reprojected", returnReduce(scalar(reprojected_), sumOp<scalar>()));
+    runTotals::add(totals, "notConverged", returnReduce(scalar(notConverged_), sumOp<scalar>()));
+    runTotals::add(totals, "zoneChainSteps", returnReduce(scalar(zoneChainSteps_), sumOp<scalar>()));
+    runTotals::add(totals, "stoppedChainSteps", returnReduce(scalar(stoppedChainSteps_), sumOp<scalar>()));
+    runTotals::add(totals, "heldChainSteps", returnReduce(scalar(heldChainSteps_), sumOp<scalar>()));
+    runTotals::add(totals, "wrappedChainSteps", returnReduce(scalar(wrappedChainSteps_), sumOp<scalar>()));
+    runTotals::add(totals, "leftOff", returnReduce(scalar(leftOff_), sumOp<scalar>()));
+    runTotals::add(totals, "zonesFormed", returnReduce(scalar(zonesFormed_), sumOp<scalar>()));
+    runTotals::add(totals, "crossingsLeft", returnReduce(scalar(crossingsLeft_), sumOp<scalar>()));
+    runTotals::add(totals, "energyRemoved", returnReduce(energyRemoved_, sumOp<scalar>()));
+}
+
+
+void Foam::polymer::contactProjection::readRunTotals(const dictionary& dict)
+{
+    const dictionary* saved = dict.findDict("reprojection");
+    if (!saved)
+    {
+        return;
+    }
+    runTotals::read(*saved, "reprojected", reprojected_);
+    runTotals::read(*saved, "notConverged", notConverged_);
+    runTotals::read(*saved, "zoneChainSteps", zoneChainSteps_);
+    runTotals::read(*saved, "stoppedChainSteps", stoppedChainSteps_);
+    runTotals::read(*saved, "heldChainSteps", heldChainSteps_);
+    runTotals::read(*saved, "wrappedChainSteps", wrappedChainSteps_);
+    runTotals::read(*saved, "leftOff", leftOff_);
+    runTotals::read(*saved, "zonesFormed", zonesFormed_);
+    runTotals::read(*saved, "crossingsLeft", crossingsLeft_);
+    runTotals::read(*saved, "energyRemoved", energyRemoved_);
+}
+
+
 // ************************************************************************* //

@@ -29,6 +29,7 @@ Description
 #include "polymerCloud.H"
 #include "checkedInput.H"
 #include "writeStatus.H"
+#include "runTotals.H"
 #include "IOField.H"
 #include "IOdictionary.H"
 #include "IFstream.H"
@@ -105,25 +106,54 @@ Foam::fileName Foam::polymer::polymerCloud::outputPropertiesFile
 }
 
 
-Foam::label Foam::polymer::polymerCloud::readNextChainId
+Foam::dictionary Foam::polymer::polymerCloud::readOutputProperties
 (
     const fileName& timeDir
 ) const
 {
     IFstream is(outputPropertiesFile(timeDir));
-    if (!is.good())
-    {
-        return -1;
-    }
-    const dictionary dict(is);
+    return is.good() ? dictionary(is) : dictionary();
+}
+
+
+Foam::label Foam::polymer::polymerCloud::readNextChainId
+(
+    const dictionary& outputProperties
+) const
+{
     return checkedInput::labelAtLeastOrDefault
     (
-        dict, "nextChainId", -1, 0, "<the next chain's id>"
+        outputProperties, "nextChainId", -1, 0, "<the next chain's id>"
     );
 }
 
 
-void Foam::polymer::polymerCloud::writeNextChainId() const
+void Foam::polymer::polymerCloud::readRunTotals
+(
+    const dictionary& outputProperties
+)
+{
+    const dictionary* saved = outputProperties.findDict("runTotals");
+    if (!saved)
+    {
+        return;
+    }
+    runTotals::read(*saved, "injected", nInjected_);
+    for (polymerSubModel& model : models_)
+    {
+        model.readRunTotals(*saved);
+    }
+    stepper_->readRunTotals(*saved);
+    distribution_->readRunTotals(*saved);
+    coupling_->readRunTotals(*saved);
+    if (contactProjection_)
+    {
+        contactProjection_->readRunTotals(*saved);
+    }
+}
+
+
+void Foam::polymer::polymerCloud::writeOutputProperties() const
 {
     IOdictionary outputProperties
     (
@@ -139,6 +169,26 @@ void Foam::polymer::polymerCloud::writeNextChainId() const
         )
     );
     outputProperties.add("nextChainId", nextChainId_);
+
+    // The run's totals, for a restart to continue them (collective)
+    dictionary totals;
+    runTotals::add
+    (
+        totals, "injected", returnReduce(nInjected_, sumOp<label>())
+    );
+    for (const polymerSubModel& model : models_)
+    {
+        model.writeRunTotals(totals);
+    }
+    stepper_->writeRunTotals(totals);
+    distribution_->writeRunTotals(totals);
+    coupling_->writeRunTotals(totals);
+    if (contactProjection_)
+    {
+        contactProjection_->writeRunTotals(totals);
+    }
+    outputProperties.add("runTotals", totals);
+
     outputProperties.regIOobject::write();
 }
 
@@ -341,8 +391,8 @@ bool Foam::polymer::polymerCloud::writeObject
      && bead.writeObject(fmt, ver, cmp, true)
      && typeIndex.writeObject(fmt, ver, cmp, true);
 
+    writeOutputProperties();
     IOstream::defaultPrecision(oldPrecision);
-    writeNextChainId();
 
     for (polymerCloudFunction& function : functions_)
     {

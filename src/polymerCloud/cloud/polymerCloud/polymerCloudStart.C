@@ -440,14 +440,18 @@ bool Foam::polymer::polymerCloud::startChains(const dictionary& subModels)
     {
         largestId = max(largestId, chains_.globalId(c));
     }
-    const label savedNext =
-        restart ? readNextChainId(mesh_.time().timePath())
+    const dictionary outputProperties
+    (
+        restart ? readOutputProperties(mesh_.time().timePath())
       : fromUndecomposed
-      ? readNextChainId
+      ? readOutputProperties
         (
             mesh_.time().globalPath()/mesh_.time().timeName()
         )
-      : -1;
+      : dictionary()
+    );
+    const label savedNext = readNextChainId(outputProperties);
+    readRunTotals(outputProperties);
     nextChainId_ = max
     (
         returnReduce(largestId, maxOp<label>()) + 1,

@@ -311,4 +311,29 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::polymer::polymerCoupling::SU
 }
 
 
+void Foam::polymer::polymerCoupling::writeRunTotals(dictionary& dict) const
+{
+    dictionary& totals = dict.subDictOrAdd("coupling");
+    runTotals::add
+    (
+        totals, "momentumLost", returnReduce(momentumLost_, sumOp<vector>())
+    );
+    runTotals::add
+    (
+        totals, "beadStepsLost", returnReduce(beadStepsLost_, sumOp<scalar>())
+    );
+}
+
+
+void Foam::polymer::polymerCoupling::readRunTotals(const dictionary& dict)
+{
+    const dictionary* saved = dict.findDict("coupling");
+    if (saved)
+    {
+        runTotals::read(*saved, "momentumLost", momentumLost_);
+        runTotals::read(*saved, "beadStepsLost", beadStepsLost_);
+    }
+}
+
+
 // ************************************************************************* //

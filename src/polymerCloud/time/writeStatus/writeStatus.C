@@ -138,7 +138,13 @@ void Foam::polymer::writeStatus::checkTimePrecision
     const instant& start
 )
 {
-    if (controlDict.getOrDefault<word>("timeFormat", "general") != "general")
+    // Not "constant", which findTimes gives a case without times
+    scalar value;
+    if
+    (
+        !readScalar(start.name(), value)
+     || controlDict.getOrDefault<word>("timeFormat", "general") != "general"
+    )
     {
         return;
     }

@@ -499,4 +499,38 @@ void Foam::polymer::constraintModels::exactRods::writeReport
 }
 
 
+void Foam::polymer::constraintModels::exactRods::writeRunTotals
+(
+    dictionary& dict
+) const
+{
+    constraintModel::writeRunTotals(dict);
+    dictionary& totals = dict.subDictOrAdd(modelType());
+    runTotals::add
+    (
+        totals, "exactSolves", returnReduce(exactSolves_, sumOp<label>())
+    );
+    runTotals::add
+    (
+        totals, "stoppedDescents",
+        returnReduce(stoppedDescents_, sumOp<label>())
+    );
+}
+
+
+void Foam::polymer::constraintModels::exactRods::readRunTotals
+(
+    const dictionary& dict
+)
+{
+    constraintModel::readRunTotals(dict);
+    const dictionary* saved = dict.findDict(modelType());
+    if (saved)
+    {
+        runTotals::read(*saved, "exactSolves", exactSolves_);
+        runTotals::read(*saved, "stoppedDescents", stoppedDescents_);
+    }
+}
+
+
 // ************************************************************************* //
