@@ -16,6 +16,7 @@ Description
 #include "testHelpers.H"
 #include "constraintModel.H"
 #include "maxOrNaN.H"
+#include "isFinite.H"
 #include "trefoil.H"
 #include <tuple>
 
@@ -194,6 +195,50 @@ TEST(maxOrNaN, KeepsANaN)
     EXPECT_TRUE(std::isnan(maxOrNaN(0, nan)));
     EXPECT_TRUE(std::isnan(maxOrNaN(nan, 1)));
     EXPECT_FALSE(std::isnan(max(max(scalar(0), nan), scalar(1))));
+}
+
+
+// The bit test of a list's values finds every NaN and inf, and only them:
+// the largest double, the smallest denormal and -0 are finite; the copy
+// is exact whatever the values
+TEST(isFinite, FindsEveryNaNAndInfOnly)
+{
+    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
+    const scalar inf = std::numeric_limits<scalar>::infinity();
+    const scalar finite[] =
+    {
+        0, -0.0, 1, -1e300, std::numeric_limits<scalar>::max(),
+        -std::numeric_limits<scalar>::max(),
+        std::numeric_limits<scalar>::denorm_min(),
+        std::numeric_limits<scalar>::min()
+    };
+    List<vector> values(37, vector(1, 2, 3));
+    for (const scalar x : finite)
+    {
+        values[17] = vector(3, x, -x);
+        EXPECT_TRUE(allFinite(values)) << x;
+        EXPECT_TRUE(isFinite(values[17])) << x;
+    }
+    for (const scalar x : {nan, -nan, inf, -inf})
+    {
+        for (const direction d : {0, 1, 2})
+        {
+            for (const label i : {0, 17, 36})
+            {
+                List<vector> bad(values);
+                bad[i][d] = x;
+                EXPECT_FALSE(allFinite(bad)) << x << " at " << i << ", " << d;
+                EXPECT_FALSE(isFinite(bad[i]));
+                List<vector> copy;
+                EXPECT_FALSE(copyAllFinite(bad, copy));
+                ASSERT_EQ(copy.size(), bad.size());
+                EXPECT_EQ(std::memcmp(copy.cdata(), bad.cdata(), 37*sizeof(vector)), 0);
+            }
+        }
+    }
+    List<vector> copy;
+    EXPECT_TRUE(copyAllFinite(values, copy));
+    EXPECT_EQ(copy, values);
 }
 
 

@@ -12,6 +12,7 @@ License
 
 #include "chainStepper.H"
 #include "Time.H"
+#include "isFinite.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -91,6 +92,48 @@ void Foam::polymer::chainStepper::writeNeighbourDisplacement() const
             << " by delta/a = " << std::sqrt(sumSqr/nRods) << " (rms), "
             << largest << " (largest)" << endl;
     }
+}
+
+
+void Foam::polymer::chainStepper::checkFinite
+(
+    const UList<vector>& values,
+    const char* what,
+    const char* when
+) const
+{
+    if (allFinite(values))
+    {
+        return;
+    }
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        {
+            const vector& value = values[i];
+            if (isFinite(value))
+            {
+                continue;
+            }
+            FatalErrorInFunction
+                << "The " << what << " of chain " << chains_.globalId(c)
+                << " (type " << chains_.type(c).name() << "), bead "
+                << i - chains_.start(c) << ", is " << value
+                << " " << when << " " << time_.timeName()
+                << " (time index " << time_.timeIndex() << ")" << nl
+                << "    expected: finite values; a NaN or inf made by the"
+                << " step's arithmetic (with FOAM_SIGFPE off), or by"
+                << " the flow or forces at the bead"
+                << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::polymer::chainStepper::checkFinite(const char* when) const
+{
+    checkFinite(chains_.positions(), "position", when);
+    checkFinite(chains_.velocities(), "velocity", when);
 }
 
 
@@ -347,8 +390,16 @@ void Foam::polymer::chainStepper::writeSubCycleReport(Ostream& os) const
 
 void Foam::polymer::chainStepper::start()
 {
-    positionsOld_ = chains_.positions();
-    velocitiesOld_ = chains_.velocities();
+    // What the last step made is checked as it is copied: a NaN or inf
+    // stops the run before the step uses it
+    if
+    (
+        !copyAllFinite(chains_.positions(), positionsOld_)
+     || !copyAllFinite(chains_.velocities(), velocitiesOld_)
+    )
+    {
+        checkFinite("at the start of the step to time");
+    }
 }
 
 
@@ -358,6 +409,10 @@ void Foam::polymer::chainStepper::updateDrift()
 
     if (forces_.empty())
     {
+        if (!flow_.quiescent())
+        {
+            checkFinite(flow_.beadVelocity(), "fluid velocity", "at time");
+        }
         return;
     }
 
@@ -377,6 +432,10 @@ void Foam::polymer::chainStepper::updateDrift()
             drift_[i] += mobility*force_[i];
         }
     }
+    checkFinite
+    (
+        drift_, "drift velocity (fluid velocity + force/friction)", "at time"
+    );
 }
 
 

@@ -35,6 +35,7 @@ Description
 #include "IFstream.H"
 #include "fileOperation.H"
 #include "OSspecific.H"
+#include "isFinite.H"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -285,6 +286,15 @@ void Foam::polymer::polymerCloud::readChains(const fileName& dir)
         for (label k = 0; k < size; ++k)
         {
             const label i = first + k;
+            if (i < n && !(isFinite(positions[i]) && isFinite(U[i])))
+            {
+                FatalIOErrorInFunction(properties_)
+                    << "Chain " << chainId[first] << ", bead " << k << ", in "
+                    << U.path() << " has position " << positions[i]
+                    << " and velocity " << U[i] << nl
+                    << "    expected: finite values (no NaN or inf)"
+                    << exit(FatalIOError);
+            }
             if
             (
                 i >= n || bead[i] != k || chainId[i] != chainId[first]
@@ -350,6 +360,7 @@ bool Foam::polymer::polymerCloud::writeObject
 ) const
 {
     pathTimes_.start();
+    stepper_->checkFinite("at the write of time");
     const unsigned int oldPrecision =
         IOstream::defaultPrecision(max(17u, IOstream::defaultPrecision()));
 
