@@ -245,6 +245,7 @@ void Foam::polymer::polymerCloud::selectModels(const dictionary& subModels)
     collision_->setLattice(periodic_.lattice());
     wall_ = wallModel::New(subModels, mesh_);
     injection_ = injectionModel::New(subModels, mesh_);
+    injection_->checkTypes(types_);
     attachModels();
     coupling_.reset(new polymerCoupling(mesh_, flow_()));
     stepper_.reset

@@ -40,8 +40,11 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
     ),
     seed_
     (
-        properties.optionalSubDict("solution")
-       .getOrDefault<label>("seed", 1)
+        checkedInput::labelAtLeastOrDefault
+        (
+            properties.optionalSubDict("solution"), "seed", 1, 0,
+            "<the noise's seed, a whole number>"
+        )
     ),
     rodLengthCheck_
     (

@@ -51,10 +51,30 @@ Foam::polymer::injectionModels::boxInjection::boxInjection
             << "    expected: min (x y z); max (X Y Z); with X >= x, ..."
             << exit(FatalIOError);
     }
+    if (!(end_ > start_))
+    {
+        FatalIOErrorInFunction(coeffDict_)
+            << "Keywords 'start' " << start_ << " and 'end' " << end_
+            << " in " << coeffDict_.name() << " leave no time to inject"
+            << nl << "    expected: end > start (times)"
+            << exit(FatalIOError);
+    }
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::polymer::injectionModels::boxInjection::checkTypes
+(
+    const PtrList<chainType>& types
+) const
+{
+    initialisationModel::findType
+    (
+        types, chainTypeName_, coeffDict_, "chainType"
+    );
+}
+
 
 Foam::label Foam::polymer::injectionModels::boxInjection::inject
 (
@@ -80,21 +100,10 @@ Foam::label Foam::polymer::injectionModels::boxInjection::inject
         return 0;
     }
 
-    label typei = -1;
-    forAll(chains.types(), i)
-    {
-        if (chains.types()[i].name() == chainTypeName_)
-        {
-            typei = i;
-        }
-    }
-    if (typei < 0)
-    {
-        FatalIOErrorInFunction(coeffDict_)
-            << "Unknown chain type '" << chainTypeName_ << "' for keyword"
-            << " 'chainType' in " << coeffDict_.name()
-            << exit(FatalIOError);
-    }
+    const label typei = initialisationModel::findType
+    (
+        chains.types(), chainTypeName_, coeffDict_, "chainType"
+    );
     const chainType& type = chains.types()[typei];
 
     const List<List<point>> x = initialisationModels::randomWalk::walksInside
