@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "vtkChains.H"
+#include "checkedInput.H"
 #include "polymerCloud.H"
 #include "foamVtkOutput.H"
 #include "OSspecific.H"
@@ -153,8 +154,19 @@ Foam::polymer::cloudFunctions::vtkChains::vtkChains
     writeOpts_(vtk::formatType::INLINE_BASE64),
     series_()
 {
-    if (IOstream::formatEnum(dict.getOrDefault<word>("format", "binary"))
-     == IOstream::ASCII)
+    static const Enum<IOstream::streamFormat> formatNames
+    ({
+        { IOstream::ASCII, "ascii" },
+        { IOstream::BINARY, "binary" },
+    });
+    if
+    (
+        checkedInput::enumOrDefault
+        (
+            dict, "format", formatNames, IOstream::BINARY
+        )
+     == IOstream::ASCII
+    )
     {
         writeOpts_.ascii(true);
     }
