@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "polymerCloudFunction.H"
+#include "modelKeywords.H"
 #include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -65,6 +66,7 @@ Foam::polymer::polymerCloudFunction::New
         ) << exit(FatalIOError);
     }
 
+    modelKeywords::check(typeName, functionType, dict);
     return autoPtr<polymerCloudFunction>(cstrIter()(name, dict, cloud));
 }
 

@@ -19,7 +19,7 @@ License
 namespace
 {
 
-const Foam::dictionary& coefficients
+Foam::dictionary coefficients
 (
     const Foam::word& modelType,
     const Foam::dictionary& dict,
@@ -34,7 +34,10 @@ const Foam::dictionary& coefficients
             dict, keyword, requiredCoeffs
         );
     }
-    return dict.optionalSubDict(keyword);
+
+    // Empty when absent, not the parent dictionary (optionalSubDict's
+    // answer), whose entries are other models' selections
+    return dict.subOrEmptyDict(keyword);
 }
 
 } // End anonymous namespace

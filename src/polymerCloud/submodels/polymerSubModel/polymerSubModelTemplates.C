@@ -11,6 +11,9 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "checkedInput.H"
+#include "modelKeywords.H"
+
+#include <type_traits>
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -59,7 +62,14 @@ Foam::autoPtr<Model> Foam::polymer::polymerSubModel::selectNamed
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<Model>(cstrIter()(std::forward<Args>(args)...));
+    autoPtr<Model> model(cstrIter()(std::forward<Args>(args)...));
+
+    // A misspelt coefficient would be ignored and its default used
+    if constexpr (std::is_base_of<polymerSubModel, Model>::value)
+    {
+        modelKeywords::check(Model::typeName, modelType, model->coeffDict());
+    }
+    return model;
 }
 
 
