@@ -239,6 +239,21 @@ TEST(isFinite, FindsEveryNaNAndInfOnly)
     List<vector> copy;
     EXPECT_TRUE(copyAllFinite(values, copy));
     EXPECT_EQ(copy, values);
+
+    // Into a DynamicList (the stepper's x^n), which must keep track of its
+    // capacity: it grows and shrinks after the copy as it should
+    DynamicList<vector> dynamic(4);
+    EXPECT_TRUE(copyAllFinite(values, dynamic));
+    EXPECT_EQ(List<vector>(dynamic), values);
+    for (label i = 0; i < 100; ++i)
+    {
+        dynamic.append(vector(i, 0, 0));
+    }
+    EXPECT_EQ(dynamic.size(), 137);
+    EXPECT_TRUE(copyAllFinite(SubList<vector>(values, 5), dynamic));
+    dynamic.shrink();
+    EXPECT_EQ(dynamic.size(), 5);
+    EXPECT_EQ(dynamic.capacity(), 5);
 }
 
 
