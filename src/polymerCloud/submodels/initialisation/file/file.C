@@ -87,18 +87,25 @@ void Foam::polymer::initialisationModels::file::create
     const label seed
 ) const
 {
-    const IOdictionary chainsFile
+    IOobject io
     (
-        IOobject
-        (
-            fileName_,
-            mesh_.time().constant(),
-            mesh_,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
+        fileName_,
+        mesh_.time().constant(),
+        mesh_,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
     );
+    if (!io.typeHeaderOk<IOdictionary>(false))
+    {
+        FatalIOErrorInFunction(coeffDict_)
+            << "Keyword 'file' in " << coeffDict_.name() << " names "
+            << io.objectPath() << ", which does not exist" << nl
+            << "    expected: file <the name of a chains file in constant/>;"
+            << " (default polymerChains)"
+            << exit(FatalIOError);
+    }
+    const IOdictionary chainsFile(io);
 
     if (!chainsFile.found("chains", keyType::LITERAL))
     {
