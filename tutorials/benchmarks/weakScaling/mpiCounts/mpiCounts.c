@@ -1,0 +1,154 @@
+/*---------------------------------------------------------------------------*\
+  polymerCloud: tutorials/benchmarks/weakScaling/mpiCounts/mpiCounts.c
+
+Description
+    An MPI profiling (PMPI) library, preloaded into each rank: counts the
+    messages a rank sends and their bytes, point to point (with the
+    distinct ranks it sends to) and in collectives (one per call, the bytes
+    it contributes), and at MPI_Finalize writes them with the rank's peak
+    resident memory to mpiCounts.<rank> in the working directory:
+        rank sends sendBytes partners collectives collectiveBytes maxRSSkB
+    Build: mpicc -O2 -shared -fPIC -o libmpiCounts.so mpiCounts.c
+    Use:   mpirun -x LD_PRELOAD=$PWD/libmpiCounts.so ...
+\*---------------------------------------------------------------------------*/
+
+#include <mpi.h>
+#include <stdio.h>
+#include <sys/resource.h>
+
+#define MAX_RANKS 4096
+
+static long long sends = 0, sendBytes = 0, collectives = 0, collectiveBytes = 0;
+static unsigned char partner[MAX_RANKS];
+
+static long long bytesOf(int count, MPI_Datatype type)
+{
+    int size = 0;
+    PMPI_Type_size(type, &size);
+    return (long long)count*size;
+}
+
+static void sent(int count, MPI_Datatype type, int dest)
+{
+    ++sends;
+    sendBytes += bytesOf(count, type);
+    if (dest >= 0 && dest < MAX_RANKS)
+    {
+        partner[dest] = 1;
+    }
+}
+
+static void collective(int count, MPI_Datatype type)
+{
+    ++collectives;
+    collectiveBytes += bytesOf(count, type);
+}
+
+int MPI_Send(const void* b, int c, MPI_Datatype t, int d, int g, MPI_Comm m)
+{ sent(c, t, d); return PMPI_Send(b, c, t, d, g, m); }
+
+int MPI_Ssend(const void* b, int c, MPI_Datatype t, int d, int g, MPI_Comm m)
+{ sent(c, t, d); return PMPI_Ssend(b, c, t, d, g, m); }
+
+int MPI_Bsend(const void* b, int c, MPI_Datatype t, int d, int g, MPI_Comm m)
+{ sent(c, t, d); return PMPI_Bsend(b, c, t, d, g, m); }
+
+int MPI_Isend
+(const void* b, int c, MPI_Datatype t, int d, int g, MPI_Comm m, MPI_Request* r)
+{ sent(c, t, d); return PMPI_Isend(b, c, t, d, g, m, r); }
+
+int MPI_Issend
+(const void* b, int c, MPI_Datatype t, int d, int g, MPI_Comm m, MPI_Request* r)
+{ sent(c, t, d); return PMPI_Issend(b, c, t, d, g, m, r); }
+
+int MPI_Allreduce
+(const void* s, void* r, int c, MPI_Datatype t, MPI_Op o, MPI_Comm m)
+{ collective(c, t); return PMPI_Allreduce(s, r, c, t, o, m); }
+
+int MPI_Reduce
+(const void* s, void* r, int c, MPI_Datatype t, MPI_Op o, int root, MPI_Comm m)
+{ collective(c, t); return PMPI_Reduce(s, r, c, t, o, root, m); }
+
+int MPI_Bcast(void* b, int c, MPI_Datatype t, int root, MPI_Comm m)
+{ collective(c, t); return PMPI_Bcast(b, c, t, root, m); }
+
+int MPI_Gather
+(const void* s, int sc, MPI_Datatype st, void* r, int rc, MPI_Datatype rt,
+ int root, MPI_Comm m)
+{ collective(sc, st); return PMPI_Gather(s, sc, st, r, rc, rt, root, m); }
+
+int MPI_Gatherv
+(const void* s, int sc, MPI_Datatype st, void* r, const int* rc,
+ const int* d, MPI_Datatype rt, int root, MPI_Comm m)
+{ collective(sc, st); return PMPI_Gatherv(s, sc, st, r, rc, d, rt, root, m); }
+
+int MPI_Allgather
+(const void* s, int sc, MPI_Datatype st, void* r, int rc, MPI_Datatype rt,
+ MPI_Comm m)
+{ collective(sc, st); return PMPI_Allgather(s, sc, st, r, rc, rt, m); }
+
+int MPI_Allgatherv
+(const void* s, int sc, MPI_Datatype st, void* r, const int* rc,
+ const int* d, MPI_Datatype rt, MPI_Comm m)
+{ collective(sc, st); return PMPI_Allgatherv(s, sc, st, r, rc, d, rt, m); }
+
+int MPI_Alltoall
+(const void* s, int sc, MPI_Datatype st, void* r, int rc, MPI_Datatype rt,
+ MPI_Comm m)
+{
+    int n = 1;
+    PMPI_Comm_size(m, &n);
+    collective(sc*n, st);
+    return PMPI_Alltoall(s, sc, st, r, rc, rt, m);
+}
+
+int MPI_Alltoallv
+(const void* s, const int* sc, const int* sd, MPI_Datatype st, void* r,
+ const int* rc, const int* rd, MPI_Datatype rt, MPI_Comm m)
+{
+    int n = 1, i, total = 0;
+    PMPI_Comm_size(m, &n);
+    for (i = 0; i < n; ++i)
+    {
+        total += sc[i];
+    }
+    collective(total, st);
+    return PMPI_Alltoallv(s, sc, sd, st, r, rc, rd, rt, m);
+}
+
+int MPI_Scatter
+(const void* s, int sc, MPI_Datatype st, void* r, int rc, MPI_Datatype rt,
+ int root, MPI_Comm m)
+{ collective(rc, rt); return PMPI_Scatter(s, sc, st, r, rc, rt, root, m); }
+
+int MPI_Scatterv
+(const void* s, const int* sc, const int* d, MPI_Datatype st, void* r,
+ int rc, MPI_Datatype rt, int root, MPI_Comm m)
+{ collective(rc, rt); return PMPI_Scatterv(s, sc, d, st, r, rc, rt, root, m); }
+
+int MPI_Finalize(void)
+{
+    int rank = 0, i, nPartners = 0;
+    char name[64];
+    struct rusage usage;
+    FILE* out;
+
+    PMPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    for (i = 0; i < MAX_RANKS; ++i)
+    {
+        nPartners += partner[i];
+    }
+    getrusage(RUSAGE_SELF, &usage);
+    snprintf(name, sizeof(name), "mpiCounts.%d", rank);
+    out = fopen(name, "w");
+    if (out)
+    {
+        fprintf
+        (
+            out, "%d %lld %lld %d %lld %lld %ld\n", rank, sends, sendBytes,
+            nPartners, collectives, collectiveBytes, usage.ru_maxrss
+        );
+        fclose(out);
+    }
+    return PMPI_Finalize();
+}
