@@ -218,7 +218,16 @@ void Foam::polymer::writeStatus::selectComplete(const argList& args)
 
     for (;;)
     {
-        const instantList times(TimePaths::findTimes(args.path()));
+        // The time directories ("constant", which findTimes lists first
+        // as time 0, is none)
+        DynamicList<instant> times;
+        for (const instant& t : TimePaths::findTimes(args.path()))
+        {
+            if (t.name() != "constant")
+            {
+                times.append(t);
+            }
+        }
         const scalar mine = times.empty() ? -GREAT : times.last().value();
         const scalar latest = returnReduce(mine, maxOp<scalar>());
         if (latest == -GREAT)
