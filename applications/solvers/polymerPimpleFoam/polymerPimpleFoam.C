@@ -39,20 +39,21 @@ Description
 
     constant/polymerCloudProperties sets the chains and their models; with
     flow 'field' the case also needs constant/transportProperties and
-    constant/turbulenceProperties, as pimpleFoam's.
+    constant/turbulenceProperties, as pimpleFoam's. The solver is the class
+    polymerPimpleSolver (the fields, the PIMPLE control and the cloud as
+    members; preSolve, evolve, momentumPredictor, pressureCorrector,
+    postSolve).
+
+    Each time directory written is marked complete once all its files are
+    (polymer::writeStatus); a restart from latestTime continues from the
+    last complete time, moving aside a directory left incomplete by a run
+    stopped while writing it (system/controlDict incompleteTimes skip, the
+    default; or stop).
 
 \*---------------------------------------------------------------------------*/
 
-#include "fvCFD.H"
-#include "singlePhaseTransportModel.H"
-#include "turbulentTransportModel.H"
-#include "pimpleControl.H"
-#include "fvOptions.H"
-#include "polymerCloud.H"
+#include "polymerPimpleSolver.H"
 #include "writeStatus.H"
-#include "progressReport.H"
-
-using namespace Foam::polymer;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -72,30 +73,24 @@ int main(int argc, char *argv[])
     polymer::writeStatus::selectComplete(args);
     #include "createTime.H"
     polymer::writeStatus writes(runTime);
-
     #include "createMesh.H"
 
-    polymerCloud polymers("polymerCloud", mesh);
+    polymerPimpleSolver solver(runTime, mesh);
 
-    Info<< nl;
-    polymers.writeSummary(Info);
-    Info<< endl;
+    Info<< "\nStarting time loop"
+        << (solver.solvesFlow() ? "" : " (no flow equations to solve)")
+        << nl << endl;
 
-    const progressReport progress(runTime);
-
-    if (polymers.solvesFlow())
+    while (writes.run())
     {
-        #include "flowLoop.H"
-    }
-    else
-    {
-        #include "polymerLoop.H"
+        solver.preSolve();
+        ++runTime;
+        solver.evolve();
+        writes.write();
+        solver.postSolve();
     }
 
-    Info<< nl;
-    polymers.writeReport(Info);
-    runTime.printExecutionTime(Info);
-
+    solver.writeReport(Info);
     Info<< "End\n" << endl;
 
     return 0;

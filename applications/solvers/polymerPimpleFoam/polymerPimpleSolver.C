@@ -1,0 +1,295 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "polymerPimpleSolver.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::polymerPimpleSolver::createFlow()
+{
+    Time& runTime = runTime_;
+    fvMesh& mesh = mesh_;
+
+    pimple_.reset(new pimpleControl(mesh));
+
+    adjustTimeStep_ =
+        runTime.controlDict().lookupOrDefault("adjustTimeStep", false);
+    maxCo_ = runTime.controlDict().lookupOrDefault<scalar>("maxCo", 1.0);
+    maxDeltaT_ =
+        runTime.controlDict().lookupOrDefault<scalar>("maxDeltaT", GREAT);
+
+    cumulativeContErr_.reset
+    (
+        new uniformDimensionedScalarField
+        (
+            IOobject
+            (
+                "cumulativeContErr",
+                runTime.timeName(),
+                "uniform",
+                mesh,
+                IOobject::READ_IF_PRESENT,
+                IOobject::AUTO_WRITE
+            ),
+            dimensionedScalar(dimless, Zero)
+        )
+    );
+
+    auto field = [&](const word& name)
+    {
+        return IOobject
+        (
+            name, runTime.timeName(), mesh,
+            IOobject::MUST_READ, IOobject::AUTO_WRITE
+        );
+    };
+
+    Info<< "Reading field p\n" << endl;
+    p_.reset(new volScalarField(field("p"), mesh));
+
+    Info<< "Reading field U\n" << endl;
+    U_.reset(new volVectorField(field("U"), mesh));
+
+    Info<< "Reading/calculating face flux field phi\n" << endl;
+    IOobject phiIO(field("phi"));
+    phiIO.readOpt() = IOobject::READ_IF_PRESENT;
+    phi_.reset(new surfaceScalarField(phiIO, fvc::flux(U_())));
+
+    setRefCell(p_(), pimple_->dict(), pRefCell_, pRefValue_);
+    mesh.setFluxRequired(p_->name());
+
+    laminarTransport_.reset(new singlePhaseTransportModel(U_(), phi_()));
+    turbulence_ = incompressible::turbulenceModel::New
+    (
+        U_(), phi_(), laminarTransport_()
+    );
+
+    MRF_.reset(new IOMRFZoneList(mesh));
+    fvOptions_ = &fv::options::New(mesh);
+    if (!fvOptions_->optionList::size())
+    {
+        Info<< "No finite volume options present" << endl;
+    }
+
+    MRF_->correctBoundaryVelocity(U_());
+}
+
+
+Foam::scalar Foam::polymerPimpleSolver::courantNumber() const
+{
+    // As CourantNo.H
+    const scalarField sumPhi
+    (
+        fvc::surfaceSum(mag(phi_()))().primitiveField()
+    );
+
+    const scalar CoNum =
+        0.5*gMax(sumPhi/mesh_.V().field())*runTime_.deltaTValue();
+
+    const scalar meanCoNum =
+        0.5*(gSum(sumPhi)/gSum(mesh_.V().field()))*runTime_.deltaTValue();
+
+    Info<< "Courant Number mean: " << meanCoNum
+        << " max: " << CoNum << endl;
+
+    return CoNum;
+}
+
+
+void Foam::polymerPimpleSolver::solveFlow()
+{
+    pimpleControl& pimple = pimple_();
+
+    while (pimple.loop())
+    {
+        tmp<fvVectorMatrix> tUEqn(momentumPredictor());
+
+        while (pimple.correct())
+        {
+            pressureCorrector(tUEqn);
+        }
+
+        if (pimple.turbCorr())
+        {
+            laminarTransport_->correct();
+            turbulence_->correct();
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::polymerPimpleSolver::polymerPimpleSolver(Time& runTime, fvMesh& mesh)
+:
+    runTime_(runTime),
+    mesh_(mesh),
+    polymers_("polymerCloud", mesh),
+    progress_(runTime),
+    pRefCell_(0),
+    pRefValue_(0),
+    fvOptions_(nullptr),
+    adjustTimeStep_(false),
+    maxCo_(1),
+    maxDeltaT_(GREAT)
+{
+    Info<< nl;
+    polymers_.writeSummary(Info);
+    Info<< endl;
+
+    if (!polymers_.solvesFlow())
+    {
+        return;
+    }
+
+    createFlow();
+
+    // The first time step from the Courant number, only if that reduces
+    // it (setInitialDeltaT.H)
+    const scalar CoNum = courantNumber();
+    if (adjustTimeStep_ && runTime.timeIndex() == 0 && CoNum > SMALL)
+    {
+        runTime.setDeltaT
+        (
+            min
+            (
+                maxCo_*runTime.deltaTValue()/CoNum,
+                min(runTime.deltaTValue(), maxDeltaT_)
+            )
+        );
+    }
+
+    turbulence_->validate();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::polymerPimpleSolver::preSolve()
+{
+    if (!solvesFlow())
+    {
+        return;
+    }
+
+    // readTimeControls.H, CourantNo.H, setDeltaT.H: a reduction of the
+    // step is immediate, an increase damped
+    const dictionary& controls = runTime_.controlDict();
+    adjustTimeStep_ = controls.lookupOrDefault("adjustTimeStep", false);
+    maxCo_ = controls.lookupOrDefault<scalar>("maxCo", 1.0);
+    maxDeltaT_ = controls.lookupOrDefault<scalar>("maxDeltaT", GREAT);
+
+    const scalar CoNum = courantNumber();
+
+    if (adjustTimeStep_)
+    {
+        const scalar maxDeltaTFact = maxCo_/(CoNum + SMALL);
+        const scalar deltaTFact =
+            min(min(maxDeltaTFact, 1.0 + 0.1*maxDeltaTFact), 1.2);
+        runTime_.setDeltaT
+        (
+            min(deltaTFact*runTime_.deltaTValue(), maxDeltaT_)
+        );
+        Info<< "deltaT = " <<  runTime_.deltaTValue() << endl;
+    }
+}
+
+
+void Foam::polymerPimpleSolver::evolve()
+{
+    if (!solvesFlow())
+    {
+        polymers_.evolve();
+        return;
+    }
+
+    Info<< "Time = " << runTime_.timeName() << nl << endl;
+
+    // Predictor-corrector coupling: a first flow solve with the momentum
+    // of a step in the flow of its start
+    if (polymers_.predictsCoupling())
+    {
+        polymers_.predictCoupling();
+        solveFlow();
+    }
+
+    polymers_.evolve();
+
+    solveFlow();
+}
+
+
+Foam::tmp<Foam::fvVectorMatrix> Foam::polymerPimpleSolver::momentumPredictor()
+{
+    // The names of pimpleFoam's equations
+    volScalarField& p = p_();
+    volVectorField& U = U_();
+    surfaceScalarField& phi = phi_();
+    const IOMRFZoneList& MRF = MRF_();
+    fv::options& fvOptions = *fvOptions_;
+    incompressible::turbulenceModel* turbulence = turbulence_.get();
+    const pimpleControl& pimple = pimple_();
+    polymer::polymerCloud& polymers = polymers_;
+
+    #include "UEqn.H"
+
+    return tUEqn;
+}
+
+
+void Foam::polymerPimpleSolver::pressureCorrector
+(
+    tmp<fvVectorMatrix>& tUEqn
+)
+{
+    // The names of pimpleFoam's equations
+    const Time& runTime = runTime_;
+    const fvMesh& mesh = mesh_;
+    volScalarField& p = p_();
+    volVectorField& U = U_();
+    surfaceScalarField& phi = phi_();
+    const IOMRFZoneList& MRF = MRF_();
+    fv::options& fvOptions = *fvOptions_;
+    pimpleControl& pimple = pimple_();
+    const label pRefCell = pRefCell_;
+    const scalar pRefValue = pRefValue_;
+    scalar& cumulativeContErr = cumulativeContErr_->value();
+    fvVectorMatrix& UEqn = tUEqn.ref();
+
+    #include "pEqn.H"
+}
+
+
+void Foam::polymerPimpleSolver::postSolve() const
+{
+    if (solvesFlow())
+    {
+        runTime_.printExecutionTime(Info);
+        progress_.report(runTime_);
+    }
+    else if (runTime_.writeTime())
+    {
+        Info<< "Time = " << runTime_.timeName() << nl;
+        progress_.report(runTime_);
+    }
+}
+
+
+void Foam::polymerPimpleSolver::writeReport(OSstream& os) const
+{
+    os  << nl;
+    polymers_.writeReport(os);
+    runTime_.printExecutionTime(os);
+}
+
+
+// ************************************************************************* //
