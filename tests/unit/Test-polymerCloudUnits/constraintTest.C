@@ -75,7 +75,11 @@ autoPtr<constraintModel> makeModel
 {
     dictionary coeffs;
     coeffs.add("tolerance", tolerance);
-    coeffs.add("velocityTolerance", velocityTolerance);
+    if (model != "SHAKE")
+    {
+        // SHAKE has no velocity constraint (and stops at the keyword)
+        coeffs.add("velocityTolerance", velocityTolerance);
+    }
     coeffs.add("maxIterations", maxIterations);
     coeffs.add("directions", directions);
     coeffs.add("maxFailureReports", 2);
