@@ -40,7 +40,25 @@ Foam::polymer::flowModels::field::field
     ),
     sampler_(mesh),
     velocityStart_()
-{}
+{
+    if
+    (
+        !interpolation<vector>::dictionaryConstructorTablePtr_->found
+        (
+            interpolationScheme_
+        )
+    )
+    {
+        FatalIOErrorInFunction(coeffDict_)
+            << "Keyword 'interpolation' in " << coeffDict_.name() << " is "
+            << interpolationScheme_ << nl
+            << "    expected: interpolation <"
+            << interpolation<vector>::dictionaryConstructorTablePtr_
+               ->sortedToc()
+            << ">; (default cellPoint)"
+            << exit(FatalIOError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -56,6 +74,14 @@ void Foam::polymer::flowModels::field::update(const polymerChains& chains)
         return;
     }
 
+    if (!mesh_.foundObject<volVectorField>(UName_))
+    {
+        FatalIOErrorInFunction(coeffDict_)
+            << "Keyword 'U' in " << coeffDict_.name() << " names "
+            << UName_ << ", which is no velocity field of the solver" << nl
+            << "    expected: U <the velocity field's name>; (default U)"
+            << exit(FatalIOError);
+    }
     const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
     autoPtr<interpolation<vector>> interpolator
     (

@@ -60,6 +60,19 @@ Foam::polymer::wallModel::wallModel
 
     const dictionary* interactionDict =
         coeffDict_.findDict("patchInteraction", keyType::LITERAL);
+    if
+    (
+        !interactionDict
+     && coeffDict_.found("patchInteraction", keyType::LITERAL)
+    )
+    {
+        FatalIOErrorInFunction(coeffDict_)
+            << "Keyword 'patchInteraction' in " << coeffDict_.name()
+            << " is not a dictionary" << nl
+            << "    expected: patchInteraction { <patch> <rebound | escape |"
+            << " stick | reject>; ... }"
+            << exit(FatalIOError);
+    }
 
     if (interactionDict)
     {
