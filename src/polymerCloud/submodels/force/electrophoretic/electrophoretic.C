@@ -20,6 +20,36 @@ License
 makePolymerModel(forceModel, forceModels, electrophoretic)
 
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+Foam::IOobject Foam::polymer::forceModels::electrophoretic::potentialIO
+(
+    const dictionary& coeffDict,
+    const fvMesh& mesh
+)
+{
+    IOobject io
+    (
+        coeffDict.getOrDefault<word>("field", "phiE"),
+        mesh.time().timeName(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::AUTO_WRITE
+    );
+    if (!io.typeHeaderOk<volScalarField>(true))
+    {
+        FatalIOErrorInFunction(coeffDict)
+            << "Keyword 'field' in " << coeffDict.name() << " names "
+            << io.name() << ", which is no potential field (volScalarField)"
+            << " in " << mesh.time().timeName() << "/" << nl
+            << "    expected: field <the electric potential's name>;"
+            << " (default phiE)"
+            << exit(FatalIOError);
+    }
+    return io;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::polymer::forceModels::electrophoretic::electrophoretic
@@ -30,18 +60,7 @@ Foam::polymer::forceModels::electrophoretic::electrophoretic
 :
     forceModel(typeName, dict),
     charge_(coeffDict_.get<scalar>("charge")),
-    potential_
-    (
-        IOobject
-        (
-            coeffDict_.getOrDefault<word>("field", "phiE"),
-            mesh.time().timeName(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::AUTO_WRITE
-        ),
-        mesh
-    ),
+    potential_(potentialIO(coeffDict_, mesh), mesh),
     field_
     (
         IOobject
