@@ -24,13 +24,12 @@ makePolymerModel(forceModel, forceModels, electrophoretic)
 
 Foam::IOobject Foam::polymer::forceModels::electrophoretic::potentialIO
 (
-    const dictionary& coeffDict,
     const fvMesh& mesh
-)
+) const
 {
     IOobject io
     (
-        coeffDict.getOrDefault<word>("field", "phiE"),
+        coeffDict_.getOrDefault<word>("field", "phiE"),
         mesh.time().timeName(),
         mesh,
         IOobject::MUST_READ,
@@ -38,8 +37,8 @@ Foam::IOobject Foam::polymer::forceModels::electrophoretic::potentialIO
     );
     if (!io.typeHeaderOk<volScalarField>(true))
     {
-        FatalIOErrorInFunction(coeffDict)
-            << "Keyword 'field' in " << coeffDict.name() << " names "
+        FatalIOErrorInFunction(coeffDict_)
+            << "Keyword 'field' in " << coeffDict_.name() << " names "
             << io.name() << ", which is no potential field (volScalarField)"
             << " in " << mesh.time().timeName() << "/" << nl
             << "    expected: field <the electric potential's name>;"
@@ -60,7 +59,7 @@ Foam::polymer::forceModels::electrophoretic::electrophoretic
 :
     forceModel(typeName, dict),
     charge_(coeffDict_.get<scalar>("charge")),
-    potential_(potentialIO(coeffDict_, mesh), mesh),
+    potential_(potentialIO(mesh), mesh),
     field_
     (
         IOobject
