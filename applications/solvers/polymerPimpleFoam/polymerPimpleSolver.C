@@ -21,11 +21,10 @@ void Foam::polymerPimpleSolver::createFlow()
 
     pimple_.reset(new pimpleControl(mesh));
 
-    adjustTimeStep_ =
-        runTime.controlDict().lookupOrDefault("adjustTimeStep", false);
-    maxCo_ = runTime.controlDict().lookupOrDefault<scalar>("maxCo", 1.0);
-    maxDeltaT_ =
-        runTime.controlDict().lookupOrDefault<scalar>("maxDeltaT", GREAT);
+    bool& adjustTimeStep = adjustTimeStep_;
+    scalar& maxCo = maxCo_;
+    scalar& maxDeltaT = maxDeltaT_;
+    #include "readTimeControls.H"
 
     cumulativeContErr_.reset
     (
@@ -86,20 +85,11 @@ void Foam::polymerPimpleSolver::createFlow()
 
 Foam::scalar Foam::polymerPimpleSolver::courantNumber() const
 {
-    // As CourantNo.H
-    const scalarField sumPhi
-    (
-        fvc::surfaceSum(mag(phi_()))().primitiveField()
-    );
+    const Time& runTime = runTime_;
+    const fvMesh& mesh = mesh_;
+    const surfaceScalarField& phi = phi_();
 
-    const scalar CoNum =
-        0.5*gMax(sumPhi/mesh_.V().field())*runTime_.deltaTValue();
-
-    const scalar meanCoNum =
-        0.5*(gSum(sumPhi)/gSum(mesh_.V().field()))*runTime_.deltaTValue();
-
-    Info<< "Courant Number mean: " << meanCoNum
-        << " max: " << CoNum << endl;
+    #include "CourantNo.H"
 
     return CoNum;
 }
@@ -154,19 +144,12 @@ Foam::polymerPimpleSolver::polymerPimpleSolver(Time& runTime, fvMesh& mesh)
     createFlow();
 
     // The first time step from the Courant number, only if that reduces
-    // it (setInitialDeltaT.H)
+    // it
     const scalar CoNum = courantNumber();
-    if (adjustTimeStep_ && runTime.timeIndex() == 0 && CoNum > SMALL)
-    {
-        runTime.setDeltaT
-        (
-            min
-            (
-                maxCo_*runTime.deltaTValue()/CoNum,
-                min(runTime.deltaTValue(), maxDeltaT_)
-            )
-        );
-    }
+    const bool adjustTimeStep = adjustTimeStep_;
+    const scalar maxCo = maxCo_;
+    const scalar maxDeltaT = maxDeltaT_;
+    #include "setInitialDeltaT.H"
 
     turbulence_->validate();
 }
@@ -181,26 +164,15 @@ void Foam::polymerPimpleSolver::preSolve()
         return;
     }
 
-    // readTimeControls.H, CourantNo.H, setDeltaT.H: a reduction of the
-    // step is immediate, an increase damped
-    const dictionary& controls = runTime_.controlDict();
-    adjustTimeStep_ = controls.lookupOrDefault("adjustTimeStep", false);
-    maxCo_ = controls.lookupOrDefault<scalar>("maxCo", 1.0);
-    maxDeltaT_ = controls.lookupOrDefault<scalar>("maxDeltaT", GREAT);
+    // A reduction of the step is immediate, an increase damped
+    Time& runTime = runTime_;
+    bool& adjustTimeStep = adjustTimeStep_;
+    scalar& maxCo = maxCo_;
+    scalar& maxDeltaT = maxDeltaT_;
+    #include "readTimeControls.H"
 
     const scalar CoNum = courantNumber();
-
-    if (adjustTimeStep_)
-    {
-        const scalar maxDeltaTFact = maxCo_/(CoNum + SMALL);
-        const scalar deltaTFact =
-            min(min(maxDeltaTFact, 1.0 + 0.1*maxDeltaTFact), 1.2);
-        runTime_.setDeltaT
-        (
-            min(deltaTFact*runTime_.deltaTValue(), maxDeltaT_)
-        );
-        Info<< "deltaT = " <<  runTime_.deltaTValue() << endl;
-    }
+    #include "setDeltaT.H"
 }
 
 
