@@ -116,16 +116,30 @@ bool Foam::polymer::constraintModel::correctChain
 ) const
 {
     scalar residual = 0;
-    label iter =
+    const label iter =
         correctChainLengths(chains, chaini, positionsOld, deltaT, residual);
 
-    if (iter != 0)
+    return completeChain(chains, chaini, iter, residual, time);
+}
+
+
+bool Foam::polymer::constraintModel::completeChain
+(
+    polymerChains& chains,
+    const label chaini,
+    const label lengthIterations,
+    const scalar residual,
+    const scalar time
+) const
+{
+    if
+    (
+        !countSolve
+        (
+            chains, chaini, "Rod-length", lengthIterations, residual, time
+        )
+    )
     {
-        counters_.add(mag(iter), iter > 0);
-    }
-    if (iter < 0)
-    {
-        reportFailure(chains, chaini, "Rod-length", time, residual, -iter);
         return false;
     }
 
@@ -133,17 +147,34 @@ bool Foam::polymer::constraintModel::correctChain
     // relative velocities, not in their lengths; smaller steps would not
     // help it (its convergence depends on the chain's shape), so it is
     // reported and the step goes on
-    iter = correctChainVelocities(chains, chaini, residual);
+    scalar velocityResidual = 0;
+    const label iter =
+        correctChainVelocities(chains, chaini, velocityResidual);
+    countSolve(chains, chaini, "Rod-velocity", iter, velocityResidual, time);
 
-    if (iter != 0)
-    {
-        counters_.add(mag(iter), iter > 0);
-    }
-    if (iter < 0)
-    {
-        reportFailure(chains, chaini, "Rod-velocity", time, residual, -iter);
-    }
+    return true;
+}
 
+
+bool Foam::polymer::constraintModel::countSolve
+(
+    const polymerChains& chains,
+    const label chaini,
+    const word& stage,
+    const label iterations,
+    const scalar residual,
+    const scalar time
+) const
+{
+    if (iterations != 0)
+    {
+        counters_.add(mag(iterations), iterations > 0);
+    }
+    if (iterations < 0)
+    {
+        reportFailure(chains, chaini, stage, time, residual, -iterations);
+        return false;
+    }
     return true;
 }
 
@@ -190,15 +221,7 @@ void Foam::polymer::constraintModel::correctVelocities
     {
         scalar residual = 0;
         const label iter = correctChainVelocities(chains, c, residual);
-
-        if (iter != 0)
-        {
-            counters_.add(mag(iter), iter > 0);
-        }
-        if (iter < 0)
-        {
-            reportFailure(chains, c, "Rod-velocity", time, residual, -iter);
-        }
+        countSolve(chains, c, "Rod-velocity", iter, residual, time);
     }
 }
 

@@ -239,7 +239,159 @@ Foam::label Foam::polymer::constraintModels::newton::iterate
 }
 
 
+Foam::label Foam::polymer::constraintModels::newton::laneGroup
+(
+    const polymerChains& chains,
+    const label chaini
+) const
+{
+    const label typei = chains.typeIndex(chaini);
+    if (chains.type(chaini).ring() || chains.type(chaini).nRods() < 1)
+    {
+        return 0;
+    }
+
+    label nGroup = 1;
+    while
+    (
+        nGroup < newtonLanes::nLanes
+     && chaini + nGroup < chains.nChains()
+     && chains.typeIndex(chaini + nGroup) == typei
+    )
+    {
+        ++nGroup;
+    }
+    return nGroup;
+}
+
+
+void Foam::polymer::constraintModels::newton::correctInLanes
+(
+    polymerChains& chains,
+    const label chaini,
+    const label nGroup,
+    const UList<vector>& positionsOld,
+    const scalar deltaT,
+    const scalar time,
+    DynamicList<label>& failedChains
+) const
+{
+    const chainType& type = chains.type(chaini);
+    const label n = type.nBeads();
+    const bool alongStart = (directions_ == SHAKE::directionType::start);
+
+    // A group of fewer chains than lanes repeats its last chain
+    lanes_.resize(n);
+    for (label lanei = 0; lanei < newtonLanes::nLanes; ++lanei)
+    {
+        const label first = chains.start(chaini + min(lanei, nGroup - 1));
+        lanes_.load
+        (
+            lanei,
+            chains.positions().cdata() + first,
+            (alongStart ? positionsOld.cdata() : chains.positions().cdata())
+          + first
+        );
+    }
+
+    label iterations[newtonLanes::nLanes];
+    lanes_.solve(type.rodLength(), tolerance_, maxIterations_, iterations);
+
+    // The converged chains take their positions, and their velocities the
+    // beads' moves from x* (as iterate), for the velocity solve in lanes
+    const scalar oneByDeltaT = 1/deltaT;
+    for (label lanei = 0; lanei < nGroup; ++lanei)
+    {
+        if (!iterations[lanei])
+        {
+            continue;
+        }
+        const label first = chains.start(chaini + lanei);
+        vector* x = chains.positions().data() + first;
+        vector* v = chains.velocities().data() + first;
+        reference_ = SubList<vector>(chains.positions(), n, first);
+        lanes_.store(lanei, x);
+        for (label i = 0; i < n; ++i)
+        {
+            v[i] += oneByDeltaT*(x[i] - reference_[i]);
+        }
+        lanes_.loadVelocities(lanei, v);
+    }
+
+    bool velocitiesSolved[newtonLanes::nLanes];
+    scalar largestVelocity[newtonLanes::nLanes];
+    lanes_.projectVelocities(velocitiesSolved, largestVelocity);
+
+    // In chain order, as one at a time: counts, reports and failures alike
+    for (label lanei = 0; lanei < nGroup; ++lanei)
+    {
+        const label c = chaini + lanei;
+        if (!iterations[lanei])
+        {
+            if (!correctChain(chains, c, positionsOld, deltaT, time))
+            {
+                failedChains.append(c);
+            }
+            continue;
+        }
+
+        countSolve(chains, c, "Rod-length", iterations[lanei], 0, time);
+
+        vector* v = chains.velocities().data() + chains.start(c);
+        scalar residual = 0;
+        label iter = 0;
+        if (velocitiesSolved[lanei])
+        {
+            // As correctChainVelocities
+            lanes_.storeVelocities(lanei, v);
+            residual =
+                largestVelocity[lanei]
+               /velocityScale(type, v, n, velocityTolerance_);
+            iter = (residual <= velocityTolerance_) ? 1 : -1;
+        }
+        else
+        {
+            iter = correctChainVelocities(chains, c, residual);
+        }
+        countSolve(chains, c, "Rod-velocity", iter, residual, time);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::polymer::constraintModels::newton::correct
+(
+    polymerChains& chains,
+    const UList<vector>& positionsOld,
+    const scalar deltaT,
+    const scalar time,
+    DynamicList<label>& failedChains
+) const
+{
+    label c = 0;
+    while (c < chains.nChains())
+    {
+        const label nGroup = laneGroup(chains, c);
+        if (nGroup >= 2)
+        {
+            correctInLanes
+            (
+                chains, c, nGroup, positionsOld, deltaT, time, failedChains
+            );
+            c += nGroup;
+        }
+        else
+        {
+            if (!correctChain(chains, c, positionsOld, deltaT, time))
+            {
+                failedChains.append(c);
+            }
+            ++c;
+        }
+    }
+}
+
 
 Foam::label Foam::polymer::constraintModels::newton::correctChainLengths
 (

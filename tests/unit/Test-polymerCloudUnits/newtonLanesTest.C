@@ -1,0 +1,230 @@
+/*---------------------------------------------------------------------------*\
+Description
+    newton and exactRods solve open chains of one type four at a time, in
+    the lanes of the vector registers (newtonLanes). Their correct()
+    must give every chain the bits that correctChain, one chain at a time,
+    gives it: the same positions and velocities (memcmp), the same failed
+    chains in the same order and the same counts. The scenes take each
+    path: steps of 0.02 a (lanes to convergence), 0.3 a with 50 iterations
+    (halved steps and the retry along x*: the scalar path from the start),
+    one iteration (given up at the cap), two chain types interleaved
+    (groups of 1 to 4 chains, a short group repeating its last chain), a
+    ring type among open chains, and a NaN in one chain.
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include <cstring>
+#include <limits>
+#include "testHelpers.H"
+#include "constraintModel.H"
+#include "newtonLanes.H"
+
+using namespace Foam;
+using namespace Foam::polymer;
+using namespace polymerCloudTest;
+
+namespace
+{
+
+const scalar a = 1.5, m = 2, kT = 0.5, dt = 0.01;
+
+struct laneScene
+{
+    word model;
+    word directions;
+    scalar step;
+    label maxIterations;
+    bool mixedTypes;
+    bool withNaN;
+};
+
+// Chains of 20 beads (type 0) and 7 beads (type 1, a ring when asked), in
+// the order 0 0 0 0 0 0 1 0 0 1 1 0 ... so that runs of 1 to 6 of one
+// type follow each other
+PtrList<chainType> twoTypes(const bool secondRing)
+{
+    PtrList<chainType> types(2);
+    types.set(0, new chainType("long", 20, a, m, 1, kT, false));
+    types.set(1, new chainType("short", 7, a, m, 1, kT, secondRing));
+    return types;
+}
+
+List<vector> makeScene
+(
+    polymerChains& chains,
+    const laneScene& scene,
+    std::mt19937_64& gen
+)
+{
+    const label pattern[] = {0, 0, 0, 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1};
+    label id = 0;
+    for (label repeat = 0; repeat < 3; ++repeat)
+    {
+        for (const label typei : pattern)
+        {
+            const label t = scene.mixedTypes ? typei : 0;
+            const label n = (t == 0) ? 20 : 7;
+            List<point> x = randomWalk(n, a, point(10*id, 0, 0), gen);
+            chains.append(t, id, x, List<vector>(n, Zero));
+            ++id;
+        }
+    }
+    const List<vector> positionsOld(chains.positions());
+
+    for (vector& x : chains.positions()) x += gaussian(gen, scene.step);
+    for (vector& v : chains.velocities()) v = gaussian(gen, std::sqrt(kT/m));
+    if (scene.withNaN)
+    {
+        chains.positions()[chains.start(2) + 5].z() =
+            std::numeric_limits<scalar>::quiet_NaN();
+    }
+    return positionsOld;
+}
+
+autoPtr<constraintModel> makeModel(const laneScene& scene)
+{
+    dictionary coeffs;
+    coeffs.add("maxIterations", scene.maxIterations);
+    coeffs.add("directions", scene.directions);
+    coeffs.add("maxFailureReports", 0);
+    coeffs.add("failureAction", "subStep");
+    dictionary d;
+    d.add("constraint", scene.model);
+    d.add(word(scene.model + "Coeffs"), coeffs);
+    return constraintModel::New(d);
+}
+
+bool sameBits(const UList<vector>& a, const UList<vector>& b)
+{
+    return
+        a.size() == b.size()
+     && std::memcmp(a.cdata(), b.cdata(), a.size()*sizeof(vector)) == 0;
+}
+
+class newtonLanesScene : public ::testing::TestWithParam<laneScene> {};
+
+std::string sceneName(const ::testing::TestParamInfo<laneScene>& info)
+{
+    const laneScene& s = info.param;
+    return
+        s.model + "_" + s.directions + "_step" + std::to_string(std::lround(100*s.step/a))
+      + "_iter" + std::to_string(s.maxIterations)
+      + (s.mixedTypes ? "_mixed" : "") + (s.withNaN ? "_NaN" : "");
+}
+
+} // End anonymous namespace
+
+
+TEST_P(newtonLanesScene, SameBitsAsOneChainAtATime)
+{
+    const laneScene scene = GetParam();
+    std::mt19937_64 gen(2718);
+
+    PtrList<chainType> types(twoTypes(scene.mixedTypes && scene.step > 0.1));
+    polymerChains inLanes(types);
+    const List<vector> positionsOld = makeScene(inLanes, scene, gen);
+    polymerChains oneByOne(inLanes);
+
+    autoPtr<constraintModel> lanesModel = makeModel(scene);
+    DynamicList<label> failedInLanes;
+    lanesModel->correct(inLanes, positionsOld, dt, 0, failedInLanes);
+
+    autoPtr<constraintModel> scalarModel = makeModel(scene);
+    DynamicList<label> failedOneByOne;
+    for (label c = 0; c < oneByOne.nChains(); ++c)
+    {
+        if (!scalarModel->correctChain(oneByOne, c, positionsOld, dt, 0))
+        {
+            failedOneByOne.append(c);
+        }
+    }
+
+    EXPECT_TRUE(sameBits(inLanes.positions(), oneByOne.positions()));
+    EXPECT_TRUE(sameBits(inLanes.velocities(), oneByOne.velocities()));
+    EXPECT_EQ(failedInLanes, failedOneByOne);
+    EXPECT_EQ(lanesModel->count().solves, scalarModel->count().solves);
+    EXPECT_EQ(lanesModel->count().iterations, scalarModel->count().iterations);
+    EXPECT_EQ
+    (
+        lanesModel->count().maxIterations,
+        scalarModel->count().maxIterations
+    );
+    EXPECT_EQ(lanesModel->count().failures, scalarModel->count().failures);
+
+    // The scene reaches the paths it is for
+    if (scene.step < 0.1 && !scene.withNaN)
+    {
+        EXPECT_EQ(lanesModel->count().failures, 0);
+    }
+    if (scene.withNaN || scene.maxIterations == 1)
+    {
+        EXPECT_GT(lanesModel->count().failures, 0);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P
+(
+    constraint,
+    newtonLanesScene,
+    ::testing::Values
+    (
+        laneScene{"newton", "start", 0.02*a, 50, false, false},
+        laneScene{"newton", "end", 0.02*a, 50, false, false},
+        laneScene{"newton", "start", 0.02*a, 50, true, false},
+        laneScene{"newton", "start", 0.3*a, 50, true, false},
+        laneScene{"newton", "end", 0.3*a, 50, false, false},
+        laneScene{"newton", "start", 0.3*a, 1, false, false},
+        laneScene{"newton", "start", 0.02*a, 50, true, true},
+        laneScene{"exactRods", "start", 0.02*a, 50, true, false},
+        laneScene{"exactRods", "start", 0.3*a, 50, true, false},
+        laneScene{"exactRods", "start", 0.6*a, 50, false, false}
+    ),
+    sceneName
+);
+
+
+// A lane whose system has a zero pivot is given up, without a division by
+// zero, and the other lanes converge as they would alone: a chain whose
+// x* rods are perpendicular to its x^n rods (every diagonal entry zero)
+TEST(newtonLanes, GivesUpALaneWithAZeroPivot)
+{
+    const label n = 5;
+    List<vector> straight(n), bent(n), rodsAcross(n);
+    for (label i = 0; i < n; ++i)
+    {
+        straight[i] = vector(i*a*1.01, 0, 0);
+        rodsAcross[i] = vector(0, i*a, 0);
+    }
+
+    newtonLanes lanes;
+    lanes.resize(n);
+    for (label lanei = 0; lanei < newtonLanes::nLanes; ++lanei)
+    {
+        lanes.load
+        (
+            lanei,
+            straight.cdata(),
+            (lanei == 2 ? rodsAcross : straight).cdata()
+        );
+    }
+    label iterations[newtonLanes::nLanes];
+    lanes.solve(a, 1e-10, 50, iterations);
+
+    for (label lanei = 0; lanei < newtonLanes::nLanes; ++lanei)
+    {
+        if (lanei == 2)
+        {
+            EXPECT_EQ(iterations[lanei], 0);
+            continue;
+        }
+        EXPECT_GT(iterations[lanei], 0);
+        List<vector> x(n);
+        lanes.store(lanei, x.data());
+        for (label k = 0; k + 1 < n; ++k)
+        {
+            EXPECT_NEAR(mag(x[k + 1] - x[k]), a, 1e-9*a);
+        }
+    }
+}
+
+// ************************************************************************* //
