@@ -189,7 +189,7 @@ INSTANTIATE_TEST_SUITE_P
 TEST(newtonLanes, GivesUpALaneWithAZeroPivot)
 {
     const label n = 5;
-    List<vector> straight(n), bent(n), rodsAcross(n);
+    List<vector> straight(n), rodsAcross(n);
     for (label i = 0; i < n; ++i)
     {
         straight[i] = vector(i*a*1.01, 0, 0);
@@ -198,15 +198,14 @@ TEST(newtonLanes, GivesUpALaneWithAZeroPivot)
 
     newtonLanes lanes;
     lanes.resize(n);
+    const vector* x[newtonLanes::nLanes];
+    const vector* rodStart[newtonLanes::nLanes];
     for (label lanei = 0; lanei < newtonLanes::nLanes; ++lanei)
     {
-        lanes.load
-        (
-            lanei,
-            straight.cdata(),
-            (lanei == 2 ? rodsAcross : straight).cdata()
-        );
+        x[lanei] = straight.cdata();
+        rodStart[lanei] = (lanei == 2 ? rodsAcross : straight).cdata();
     }
+    lanes.load(x, rodStart);
     label iterations[newtonLanes::nLanes];
     lanes.solve(a, 1e-10, 50, iterations);
 
@@ -218,11 +217,11 @@ TEST(newtonLanes, GivesUpALaneWithAZeroPivot)
             continue;
         }
         EXPECT_GT(iterations[lanei], 0);
-        List<vector> x(n);
-        lanes.store(lanei, x.data());
+        List<vector> solved(straight), v(n, Zero);
+        lanes.store(lanei, solved.data(), v.data(), 1);
         for (label k = 0; k + 1 < n; ++k)
         {
-            EXPECT_NEAR(mag(x[k + 1] - x[k]), a, 1e-9*a);
+            EXPECT_NEAR(mag(solved[k + 1] - solved[k]), a, 1e-9*a);
         }
     }
 }

@@ -389,6 +389,13 @@ void Foam::polymer::newtonLanes::freeze(const bool active[nLanes])
 
 void Foam::polymer::newtonLanes::resize(const label nBeads)
 {
+    if (nBeads == nBeads_)
+    {
+        return;
+    }
+
+    // The padding rods and solutions stay zero: load and the solves write
+    // only the chain's own
     nBeads_ = nBeads;
     const label nRods = nBeads - 1;
     const laneElement zero{};
@@ -407,24 +414,33 @@ void Foam::polymer::newtonLanes::resize(const label nBeads)
 
 void Foam::polymer::newtonLanes::load
 (
-    const label lanei,
-    const vector* x,
-    const vector* rodStart
+    const vector* const x[nLanes],
+    const vector* const rodStart[nLanes]
 )
 {
     for (label i = 0; i < nBeads_; ++i)
     {
         for (direction c = 0; c < 3; ++c)
         {
-            positions_[3*i + c].value[lanei] = x[i][c];
+            lane value;
+            for (label lanei = 0; lanei < nLanes; ++lanei)
+            {
+                value[lanei] = x[lanei][i][c];
+            }
+            positions_[3*i + c].value = value;
         }
     }
     for (label k = 0; k + 1 < nBeads_; ++k)
     {
-        const vector rod = rodStart[k + 1] - rodStart[k];
         for (direction c = 0; c < 3; ++c)
         {
-            rods_[3*(k + 1) + c].value[lanei] = rod[c];
+            lane value;
+            for (label lanei = 0; lanei < nLanes; ++lanei)
+            {
+                const vector* r = rodStart[lanei];
+                value[lanei] = r[k + 1][c] - r[k][c];
+            }
+            rods_[3*(k + 1) + c].value = value;
         }
     }
 }
@@ -526,15 +542,19 @@ void Foam::polymer::newtonLanes::solve
 
 void Foam::polymer::newtonLanes::loadVelocities
 (
-    const label lanei,
-    const vector* v
+    const vector* const v[nLanes]
 )
 {
     for (label i = 0; i < nBeads_; ++i)
     {
         for (direction c = 0; c < 3; ++c)
         {
-            velocities_[3*i + c].value[lanei] = v[i][c];
+            lane value;
+            for (label lanei = 0; lanei < nLanes; ++lanei)
+            {
+                value[lanei] = v[lanei][i][c];
+            }
+            velocities_[3*i + c].value = value;
         }
     }
 }
@@ -595,15 +615,22 @@ void Foam::polymer::newtonLanes::storeVelocities
 void Foam::polymer::newtonLanes::store
 (
     const label lanei,
-    vector* x
+    vector* x,
+    vector* v,
+    const scalar oneByDeltaT
 ) const
 {
+    // As newton::iterate: v += (x - x*)/deltaT, x* being x before
     for (label i = 0; i < nBeads_; ++i)
     {
-        for (direction c = 0; c < 3; ++c)
-        {
-            x[i][c] = converged_[3*i + c].value[lanei];
-        }
+        const vector solved
+        (
+            converged_[3*i].value[lanei],
+            converged_[3*i + 1].value[lanei],
+            converged_[3*i + 2].value[lanei]
+        );
+        v[i] += oneByDeltaT*(solved - x[i]);
+        x[i] = solved;
     }
 }
 

@@ -282,17 +282,19 @@ void Foam::polymer::constraintModels::newton::correctInLanes
 
     // A group of fewer chains than lanes repeats its last chain
     lanes_.resize(n);
+    const vector* x[newtonLanes::nLanes];
+    const vector* rodStart[newtonLanes::nLanes];
+    vector* v[newtonLanes::nLanes];
     for (label lanei = 0; lanei < newtonLanes::nLanes; ++lanei)
     {
         const label first = chains.start(chaini + min(lanei, nGroup - 1));
-        lanes_.load
-        (
-            lanei,
-            chains.positions().cdata() + first,
+        x[lanei] = chains.positions().cdata() + first;
+        rodStart[lanei] =
             (alongStart ? positionsOld.cdata() : chains.positions().cdata())
-          + first
-        );
+          + first;
+        v[lanei] = chains.velocities().data() + first;
     }
+    lanes_.load(x, rodStart);
 
     label iterations[newtonLanes::nLanes];
     lanes_.solve(type.rodLength(), tolerance_, maxIterations_, iterations);
@@ -302,21 +304,18 @@ void Foam::polymer::constraintModels::newton::correctInLanes
     const scalar oneByDeltaT = 1/deltaT;
     for (label lanei = 0; lanei < nGroup; ++lanei)
     {
-        if (!iterations[lanei])
+        if (iterations[lanei])
         {
-            continue;
+            lanes_.store
+            (
+                lanei,
+                chains.positions().data() + chains.start(chaini + lanei),
+                v[lanei],
+                oneByDeltaT
+            );
         }
-        const label first = chains.start(chaini + lanei);
-        vector* x = chains.positions().data() + first;
-        vector* v = chains.velocities().data() + first;
-        reference_ = SubList<vector>(chains.positions(), n, first);
-        lanes_.store(lanei, x);
-        for (label i = 0; i < n; ++i)
-        {
-            v[i] += oneByDeltaT*(x[i] - reference_[i]);
-        }
-        lanes_.loadVelocities(lanei, v);
     }
+    lanes_.loadVelocities(v);
 
     bool velocitiesSolved[newtonLanes::nLanes];
     scalar largestVelocity[newtonLanes::nLanes];
@@ -337,16 +336,15 @@ void Foam::polymer::constraintModels::newton::correctInLanes
 
         countSolve(chains, c, "Rod-length", iterations[lanei], 0, time);
 
-        vector* v = chains.velocities().data() + chains.start(c);
         scalar residual = 0;
         label iter = 0;
         if (velocitiesSolved[lanei])
         {
             // As correctChainVelocities
-            lanes_.storeVelocities(lanei, v);
+            lanes_.storeVelocities(lanei, v[lanei]);
             residual =
                 largestVelocity[lanei]
-               /velocityScale(type, v, n, velocityTolerance_);
+               /velocityScale(type, v[lanei], n, velocityTolerance_);
             iter = (residual <= velocityTolerance_) ? 1 : -1;
         }
         else
