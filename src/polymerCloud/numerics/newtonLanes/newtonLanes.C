@@ -458,6 +458,7 @@ void Foam::polymer::newtonLanes::solve
     // falls, until it is within the tolerance
     bool active[nLanes];
     scalar lastResidual[nLanes];
+    std::fill(lastResidual, lastResidual + nLanes, GREAT);
     for (label lanei = 0; lanei < nLanes; ++lanei)
     {
         active[lanei] = true;
@@ -469,6 +470,8 @@ void Foam::polymer::newtonLanes::solve
     for (label iter = 0; iter <= maxIterations; ++iter)
     {
         bool anyActive = false;
+        bool anyConverged = false;
+        newtonLaneKernels::laneMask converging = {};
         for (label lanei = 0; lanei < nLanes; ++lanei)
         {
             if (!active[lanei])
@@ -483,10 +486,8 @@ void Foam::polymer::newtonLanes::solve
             else if (residual[lanei] <= tolerance)
             {
                 iterations[lanei] = max(iter, 1);
-                for (label i = 0; i < 3*nBeads_; ++i)
-                {
-                    converged_[i].value[lanei] = positions_[i].value[lanei];
-                }
+                converging[lanei] = -1;
+                anyConverged = true;
                 active[lanei] = false;
             }
             else if (iter == maxIterations)
@@ -497,6 +498,14 @@ void Foam::polymer::newtonLanes::solve
             {
                 lastResidual[lanei] = residual[lanei];
                 anyActive = true;
+            }
+        }
+        if (anyConverged)
+        {
+            for (label i = 0; i < 3*nBeads_; ++i)
+            {
+                converged_[i].value =
+                    converging ? positions_[i].value : converged_[i].value;
             }
         }
         if (!anyActive)
