@@ -11,11 +11,47 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "chainType.H"
+#include "kuhnChain.H"
 #include "checkedInput.H"
+#include <algorithm>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::scalar Foam::polymer::chainType::boltzmannConstant = 1.380649e-23;
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::polymer::chainType::checkKeywords(const dictionary& dict) const
+{
+    // Both forms' keywords: a misspelt optional one would go unnoticed
+    static const char* const valid[] =
+    {
+        "nBeads", "rodLength", "beadMass", "friction", "kT", "temperature",
+        "ring", "basePairs", "contourLength", "kuhnLength", "massPerLength",
+        "kuhnLengthsPerRod", "beadRadius", "viscosity", "frictionPerLength"
+    };
+
+    for (const entry& e : dict)
+    {
+        if
+        (
+            std::find(std::begin(valid), std::end(valid), e.keyword())
+         == std::end(valid)
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown keyword '" << e.keyword() << "' in chain type '"
+                << name_ << "' of " << dict.name() << nl
+                << "    expected one of:";
+            for (const char* keyword : valid)
+            {
+                FatalIOError << ' ' << keyword;
+            }
+            FatalIOError << exit(FatalIOError);
+        }
+    }
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -23,28 +59,39 @@ const Foam::scalar Foam::polymer::chainType::boltzmannConstant = 1.380649e-23;
 Foam::polymer::chainType::chainType(const word& name, const dictionary& dict)
 :
     name_(name),
-    nBeads_
-    (
-        checkedInput::labelAtLeast(dict, "nBeads", 2, "<beads per chain>")
-    ),
-    rodLength_
-    (
-        checkedInput::positiveScalar(dict, "rodLength", "<rod length a>")
-    ),
-    beadMass_
-    (
-        checkedInput::positiveScalar(dict, "beadMass", "<bead mass m>")
-    ),
-    friction_
-    (
-        checkedInput::positiveScalar
+    nBeads_(0),
+    rodLength_(0),
+    beadMass_(0),
+    friction_(0),
+    kT_(0),
+    ring_(dict.getOrDefault<bool>("ring", false)),
+    derivation_()
+{
+    checkKeywords(dict);
+
+    if (kuhnChain::describes(dict))
+    {
+        const kuhnChain polymer(name, dict, ring_);
+        nBeads_ = ring_ ? polymer.nRods() : polymer.nRods() + 1;
+        rodLength_ = polymer.rodLength();
+        beadMass_ = polymer.beadMass();
+        friction_ = polymer.friction();
+        derivation_ = polymer.derivation();
+    }
+    else
+    {
+        nBeads_ =
+            checkedInput::labelAtLeast(dict, "nBeads", 2, "<beads per chain>");
+        rodLength_ =
+            checkedInput::positiveScalar(dict, "rodLength", "<rod length a>");
+        beadMass_ =
+            checkedInput::positiveScalar(dict, "beadMass", "<bead mass m>");
+        friction_ = checkedInput::positiveScalar
         (
             dict, "friction", "<bead friction coefficient zeta>"
-        )
-    ),
-    kT_(0),
-    ring_(dict.getOrDefault<bool>("ring", false))
-{
+        );
+    }
+
     const bool hasKT = dict.found("kT", keyType::LITERAL);
     const bool hasT = dict.found("temperature", keyType::LITERAL);
 
@@ -92,7 +139,8 @@ Foam::polymer::chainType::chainType
     beadMass_(beadMass),
     friction_(friction),
     kT_(kT),
-    ring_(ring)
+    ring_(ring),
+    derivation_()
 {}
 
 
@@ -100,6 +148,10 @@ Foam::polymer::chainType::chainType
 
 void Foam::polymer::chainType::writeSummary(Ostream& os) const
 {
+    if (!derivation_.empty())
+    {
+        os  << name_ << ": " << derivation_.c_str() << nl << "    ";
+    }
     os  << name_ << ": " << (ring_ ? "ring" : "open chain") << " of "
         << nBeads_ << " beads, a " << rodLength_ << ", m " << beadMass_
         << ", zeta " << friction_ << ", kT " << kT_
