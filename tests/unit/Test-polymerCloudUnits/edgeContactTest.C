@@ -102,7 +102,7 @@ TEST(wallEdges, ADimerSweptAcrossTheCornerTurnsBack)
     for (const word impulse : {"constrained", "dumbbell"})
     {
         SCOPED_TRACE(impulse);
-        for (const word type : wallModelTypes)
+        for (const word& type : wallModelTypes)
         {
             SCOPED_TRACE(type);
             autoPtr<wallModel> wall = newWall(*mesh, type);
