@@ -298,3 +298,44 @@ INSTANTIATE_TEST_SUITE_P
 );
 
 // ************************************************************************* //
+
+
+// Rods of 1e-7 at coordinates of 1 (metres: chains far from the mesh's
+// origin in SI units) are below the coordinates' round-off (|x| eps/a =
+// 2e-9) for newton's tolerance 1e-10: the solve fails, and the message
+// says so instead of only advising smaller steps
+TEST(constraintFailure, NamesAToleranceBelowTheRoundOff)
+{
+    const scalar rod = 1e-7;
+    PtrList<chainType> types(oneType(10, rod, 1e-21, 1e-9, 4e-21));
+    polymerChains chains(types);
+    std::mt19937_64 gen(99);
+    List<point> x = randomWalk(10, rod, point(1, 1, 1), gen);
+    chains.append(0, 0, x, List<vector>(10, Zero));
+    const List<vector> positionsOld(chains.positions());
+    for (vector& p : chains.positions()) p += gaussian(gen, 0.02*rod);
+
+    dictionary coeffs;
+    coeffs.add("failureAction", "stop");
+    dictionary d;
+    d.add("constraint", "newton");
+    d.add("newtonCoeffs", coeffs);
+    autoPtr<constraintModel> constraint = constraintModel::New(d);
+
+    std::string message;
+    try
+    {
+        constraint->correct(chains, positionsOld, 1e-6, 0);
+    }
+    catch (const Foam::error& err)
+    {
+        message = err.message();
+    }
+    EXPECT_NE(message.find("round-off of the chain's coordinates"), std::string::npos)
+        << message;
+
+    // The hint is the coordinates': at the origin the same chain has none
+    EXPECT_TRUE(constraint->roundOffHint(chains, 0).size());
+    for (vector& p : chains.positions()) p -= point(1, 1, 1);
+    EXPECT_FALSE(constraint->roundOffHint(chains, 0).size());
+}

@@ -251,6 +251,7 @@ void Foam::polymer::chainStepper::subStepChain
         << runTime.value() << " did not converge in "
         << constraint_.maxSubSteps() << " sub-steps of the time step "
         << deltaT << " (constraint " << constraint_.type() << ")" << nl
+        << constraint_.roundOffHint(chains_, chaini).c_str()
         << "    The chain's state at the step's start may be too distorted"
         << " (rod-rod collisions or wall rebounds in strong flow leave rod"
         << " errors): reduce deltaT (maxCo), or raise maxSubSteps or"

@@ -11,6 +11,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "constraintModel.H"
+#include "OStringStream.H"
+#include <limits>
 #include "makePolymerModel.H"
 #include "checkedInput.H"
 
@@ -62,6 +64,35 @@ Foam::polymer::constraintModel::constraintModel
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
+Foam::string Foam::polymer::constraintModel::roundOffHint
+(
+    const polymerChains& chains,
+    const label chaini
+) const
+{
+    scalar largest = 0;
+    for (label i = chains.start(chaini); i < chains.end(chaini); ++i)
+    {
+        largest = max(largest, cmptMax(cmptMag(chains.positions()[i])));
+    }
+    const scalar a = chains.type(chaini).rodLength();
+    const scalar roundOff = largest*std::numeric_limits<scalar>::epsilon()/a;
+    if (!(lengthTolerance() < 100*roundOff))
+    {
+        return string();
+    }
+
+    OStringStream os;
+    os  << "    The rod-length tolerance " << lengthTolerance()
+        << " is within a factor 100 of the round-off of the chain's"
+        << " coordinates (|x| up to " << largest << ", rod length " << a
+        << ": |x| eps/a = " << roundOff << "), which no smaller step"
+        << " reduces: put the mesh's origin near the chains (or use"
+        << " coordinates of the rods' scale), or raise the tolerance" << nl;
+    return os.str();
+}
+
+
 void Foam::polymer::constraintModel::reportFailure
 (
     const polymerChains& chains,
@@ -79,6 +110,7 @@ void Foam::polymer::constraintModel::reportFailure
             << chains.globalId(chaini) << " (" << chains.type(chaini).name()
             << ") at time " << time << ": residual " << residual
             << " after " << iterations << " iterations" << nl
+            << roundOffHint(chains, chaini).c_str()
             << "    (failureAction stop; failureAction subStep redoes the"
             << " chain's step in sub-steps)"
             << exit(FatalError);
@@ -92,7 +124,7 @@ void Foam::polymer::constraintModel::reportFailure
             << ") at time " << time << ": residual " << residual
             << " after " << iterations << " iterations"
             << (stage == "Rod-length" ? "; sub-stepping the chain" : "")
-            << endl;
+            << nl << roundOffHint(chains, chaini).c_str() << endl;
 
         if (failuresReported_ + 1 == maxFailureReports_)
         {
