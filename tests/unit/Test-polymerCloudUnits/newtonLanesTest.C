@@ -8,8 +8,9 @@ Description
     path: steps of 0.02 a (lanes to convergence), 0.3 a with 50 iterations
     (halved steps and the retry along x*: the scalar path from the start),
     one iteration (given up at the cap), two chain types interleaved
-    (groups of 1 to 4 chains, a short group repeating its last chain), a
-    ring type among open chains, and a NaN in one chain.
+    (groups of 1 to 4 chains, a short group repeating its last chain; the
+    second type of 7, 3 or 2 beads, the shortest systems of one or two
+    rows), a ring type among open chains, and a NaN in one chain.
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
@@ -36,16 +37,17 @@ struct laneScene
     label maxIterations;
     bool mixedTypes;
     bool withNaN;
+    label nShort = 7;
 };
 
 // Chains of 20 beads (type 0) and 7 beads (type 1, a ring when asked), in
 // the order 0 0 0 0 0 0 1 0 0 1 1 0 ... so that runs of 1 to 6 of one
 // type follow each other
-PtrList<chainType> twoTypes(const bool secondRing)
+PtrList<chainType> twoTypes(const bool secondRing, const label nShort)
 {
     PtrList<chainType> types(2);
     types.set(0, new chainType("long", 20, a, m, 1, kT, false));
-    types.set(1, new chainType("short", 7, a, m, 1, kT, secondRing));
+    types.set(1, new chainType("short", nShort, a, m, 1, kT, secondRing));
     return types;
 }
 
@@ -63,7 +65,7 @@ List<vector> makeScene
         for (const label typei : pattern)
         {
             const label t = scene.mixedTypes ? typei : 0;
-            const label n = (t == 0) ? 20 : 7;
+            const label n = (t == 0) ? 20 : scene.nShort;
             List<point> x = randomWalk(n, a, point(10*id, 0, 0), gen);
             chains.append(t, id, x, List<vector>(n, Zero));
             ++id;
@@ -109,7 +111,8 @@ std::string sceneName(const ::testing::TestParamInfo<laneScene>& info)
     return
         s.model + "_" + s.directions + "_step" + std::to_string(std::lround(100*s.step/a))
       + "_iter" + std::to_string(s.maxIterations)
-      + (s.mixedTypes ? "_mixed" : "") + (s.withNaN ? "_NaN" : "");
+      + (s.mixedTypes ? "_mixed" + std::to_string(s.nShort) : "")
+      + (s.withNaN ? "_NaN" : "");
 }
 
 } // End anonymous namespace
@@ -120,7 +123,10 @@ TEST_P(newtonLanesScene, SameBitsAsOneChainAtATime)
     const laneScene scene = GetParam();
     std::mt19937_64 gen(2718);
 
-    PtrList<chainType> types(twoTypes(scene.mixedTypes && scene.step > 0.1));
+    PtrList<chainType> types
+    (
+        twoTypes(scene.mixedTypes && scene.step > 0.1 && scene.nShort > 2, scene.nShort)
+    );
     polymerChains inLanes(types);
     const List<vector> positionsOld = makeScene(inLanes, scene, gen);
     polymerChains oneByOne(inLanes);
@@ -177,7 +183,10 @@ INSTANTIATE_TEST_SUITE_P
         laneScene{"newton", "start", 0.02*a, 50, true, true},
         laneScene{"exactRods", "start", 0.02*a, 50, true, false},
         laneScene{"exactRods", "start", 0.3*a, 50, true, false},
-        laneScene{"exactRods", "start", 0.6*a, 50, false, false}
+        laneScene{"exactRods", "start", 0.6*a, 50, false, false},
+        laneScene{"newton", "start", 0.02*a, 50, true, false, 2},
+        laneScene{"newton", "start", 0.02*a, 50, true, false, 3},
+        laneScene{"newton", "end", 0.3*a, 50, true, false, 2}
     ),
     sceneName
 );
