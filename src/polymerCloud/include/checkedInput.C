@@ -129,6 +129,29 @@ Foam::label Foam::polymer::checkedInput::labelAtLeastOrDefault
 }
 
 
+bool Foam::polymer::checkedInput::firstOfTwo
+(
+    const dictionary& dict,
+    const string& owner,
+    const word& first,
+    const word& second,
+    const string& expected
+)
+{
+    const bool hasFirst = dict.found(first, keyType::LITERAL);
+    if (hasFirst == dict.found(second, keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(dict)
+            << owner.c_str() << " in " << dict.name()
+            << " needs exactly one of the keywords '" << first << "' or '"
+            << second << "'" << nl
+            << "    expected: " << expected.c_str()
+            << exit(FatalIOError);
+    }
+    return hasFirst;
+}
+
+
 Foam::word Foam::polymer::checkedInput::modelType
 (
     const dictionary& dict,

@@ -92,19 +92,11 @@ Foam::polymer::chainType::chainType(const word& name, const dictionary& dict)
         );
     }
 
-    const bool hasKT = dict.found("kT", keyType::LITERAL);
-    const bool hasT = dict.found("temperature", keyType::LITERAL);
-
-    if (hasKT == hasT)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Chain type '" << name_ << "' in " << dict.name()
-            << " needs exactly one of the keywords 'kT' or 'temperature'"
-            << nl
-            << "    expected: kT <thermal energy>; or temperature <T in K>;"
-            << exit(FatalIOError);
-    }
-
+    const bool hasKT = checkedInput::firstOfTwo
+    (
+        dict, "Chain type '" + name_ + "'", "kT", "temperature",
+        "kT <thermal energy>; or temperature <T in K>;"
+    );
     kT_ =
         hasKT
       ? checkedInput::positiveScalar(dict, "kT", "<thermal energy kT>")

@@ -26,39 +26,6 @@ const Foam::scalar Foam::polymer::kuhnChain::dnaMassPerBasePair =
     650*1.66053907e-27;
 
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- Stop when keywords of the two forms of a chain type are mixed, or
-//  when neither or both of two alternatives are given
-void requireOneOf
-(
-    const Foam::dictionary& dict,
-    const Foam::word& name,
-    const Foam::word& first,
-    const Foam::word& second,
-    const Foam::string& expected
-)
-{
-    using namespace Foam;
-    const bool hasFirst = dict.found(first, keyType::LITERAL);
-    const bool hasSecond = dict.found(second, keyType::LITERAL);
-    if (hasFirst == hasSecond)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Chain type '" << name << "' in " << dict.name()
-            << " needs exactly one of the keywords '" << first << "' or '"
-            << second << "'" << nl
-            << "    expected: " << expected.c_str()
-            << exit(FatalIOError);
-    }
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
 bool Foam::polymer::kuhnChain::describes(const dictionary& dict)
@@ -77,15 +44,17 @@ void Foam::polymer::kuhnChain::readFriction
     const dictionary& dict
 )
 {
-    requireOneOf
-    (
-        dict, name, "beadRadius", "frictionPerLength",
-        "beadRadius <Stokes radius [m]>; viscosity <[Pa s]>;"
-        " or frictionPerLength <[kg/(m s)]>;"
-    );
-
     OStringStream os;
-    if (dict.found("beadRadius", keyType::LITERAL))
+    if
+    (
+        checkedInput::firstOfTwo
+        (
+            dict, "Chain type '" + name + "'", "beadRadius",
+            "frictionPerLength",
+            "beadRadius <Stokes radius [m]>; viscosity <[Pa s]>;"
+            " or frictionPerLength <[kg/(m s)]>;"
+        )
+    )
     {
         const scalar radius = checkedInput::positiveScalar
         (
@@ -130,9 +99,9 @@ Foam::polymer::kuhnChain::kuhnChain
     friction_(0),
     frictionOrigin_()
 {
-    requireOneOf
+    const bool dna = checkedInput::firstOfTwo
     (
-        dict, name, "basePairs", "contourLength",
+        dict, "Chain type '" + name + "'", "basePairs", "contourLength",
         "basePairs <DNA base pairs>; or contourLength <L [m]>;"
         " kuhnLength <b [m]>; massPerLength <[kg/m]>;"
     );
@@ -152,7 +121,7 @@ Foam::polymer::kuhnChain::kuhnChain
 
     scalar massPerLength = 0;
     OStringStream os;
-    if (dict.found("basePairs", keyType::LITERAL))
+    if (dna)
     {
         const label basePairs = checkedInput::labelAtLeast
         (

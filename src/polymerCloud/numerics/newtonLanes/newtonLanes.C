@@ -412,11 +412,11 @@ void Foam::polymer::newtonLanes::resize(const label nBeads)
 }
 
 
-void Foam::polymer::newtonLanes::load
+void Foam::polymer::newtonLanes::interleave
 (
-    const vector* const x[nLanes],
-    const vector* const rodStart[nLanes]
-)
+    const vector* const values[nLanes],
+    laneArray& lanesOf
+) const
 {
     for (label i = 0; i < nBeads_; ++i)
     {
@@ -425,11 +425,21 @@ void Foam::polymer::newtonLanes::load
             lane value;
             for (label lanei = 0; lanei < nLanes; ++lanei)
             {
-                value[lanei] = x[lanei][i][c];
+                value[lanei] = values[lanei][i][c];
             }
-            positions_[3*i + c].value = value;
+            lanesOf[3*i + c].value = value;
         }
     }
+}
+
+
+void Foam::polymer::newtonLanes::load
+(
+    const vector* const x[nLanes],
+    const vector* const rodStart[nLanes]
+)
+{
+    interleave(x, positions_);
     for (label k = 0; k + 1 < nBeads_; ++k)
     {
         for (direction c = 0; c < 3; ++c)
@@ -554,18 +564,7 @@ void Foam::polymer::newtonLanes::loadVelocities
     const vector* const v[nLanes]
 )
 {
-    for (label i = 0; i < nBeads_; ++i)
-    {
-        for (direction c = 0; c < 3; ++c)
-        {
-            lane value;
-            for (label lanei = 0; lanei < nLanes; ++lanei)
-            {
-                value[lanei] = v[lanei][i][c];
-            }
-            velocities_[3*i + c].value = value;
-        }
-    }
+    interleave(v, velocities_);
 }
 
 
