@@ -124,6 +124,7 @@ Foam::polymerPimpleSolver::polymerPimpleSolver(Time& runTime, fvMesh& mesh)
     runTime_(runTime),
     mesh_(mesh),
     polymers_("polymerCloud", mesh),
+    polymerSource_(polymers_),
     progress_(runTime),
     pRefCell_(0),
     pRefValue_(0),
@@ -180,7 +181,7 @@ void Foam::polymerPimpleSolver::evolve()
 {
     if (!solvesFlow())
     {
-        polymers_.evolve();
+        polymerSource_.evolve();
         return;
     }
 
@@ -190,11 +191,11 @@ void Foam::polymerPimpleSolver::evolve()
     // of a step in the flow of its start
     if (polymers_.predictsCoupling())
     {
-        polymers_.predictCoupling();
+        polymerSource_.predict();
         solveFlow();
     }
 
-    polymers_.evolve();
+    polymerSource_.evolve();
 
     solveFlow();
 }
@@ -210,7 +211,7 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::polymerPimpleSolver::momentumPredictor()
     fv::options& fvOptions = *fvOptions_;
     incompressible::turbulenceModel* turbulence = turbulence_.get();
     const pimpleControl& pimple = pimple_();
-    polymer::polymerCloud& polymers = polymers_;
+    polymer::polymerMomentumSource& polymerSource = polymerSource_;
 
     #include "UEqn.H"
 

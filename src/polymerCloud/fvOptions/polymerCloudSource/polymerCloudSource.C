@@ -38,7 +38,7 @@ Foam::fv::polymerCloudSource::polymerCloudSource
 :
     option(name, modelType, dict, mesh),
     polymers_("polymerCloud", mesh),
-    evolvedTimeIndex_(mesh.time().timeIndex())
+    source_(polymers_)
 {
     fieldNames_ = coeffs_.getOrDefault<wordList>("fields", wordList(1, "U"));
     if (fieldNames_.size() != 1)
@@ -97,19 +97,7 @@ void Foam::fv::polymerCloudSource::addSup
     const label fieldi
 )
 {
-    // The chains step at the first momentum equation of a time step, in
-    // the flow of the step's start (polymerPimpleFoam's order)
-    if (mesh_.time().timeIndex() != evolvedTimeIndex_)
-    {
-        polymers_.evolve();
-        evolvedTimeIndex_ = mesh_.time().timeIndex();
-    }
-
-    if (polymers_.twoWay())
-    {
-        // SU's implicit part takes the field as the matrix's unknown
-        eqn += polymers_.SU(const_cast<volVectorField&>(eqn.psi()));
-    }
+    source_.addSup(eqn);
 }
 
 
