@@ -17,6 +17,7 @@ License
 #include "pointOwners.H"
 #include "cellLocator.H"
 #include "bitSet.H"
+#include "UIListStream.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -24,7 +25,8 @@ namespace
 {
 
 // Write chains of a polymerChains to a stream: count, then per chain its
-// type, global id, positions and velocities
+// type, global id, positions and velocities (separated, for the text
+// tokens of a binary OListStream; a Pstream drops the spaces)
 void sendChains
 (
     Foam::Ostream& os,
@@ -40,7 +42,8 @@ void sendChains
     {
         const label n = chains.size(c);
         const label first = chains.start(c);
-        os  << chains.typeIndex(c) << chains.globalId(c)
+        os  << token::SPACE << chains.typeIndex(c)
+            << token::SPACE << chains.globalId(c)
             << SubList<vector>(chains.positions(), n, first)
             << SubList<vector>(chains.velocities(), n, first);
     }
@@ -115,6 +118,89 @@ void removeBeads
 } // End anonymous namespace
 
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::labelList Foam::polymer::chainDistribution::neighbourOwners
+(
+    const UList<point>& points
+)
+{
+    // The neighbours for the points' reach beyond this processor's bounds:
+    // any processor whose mesh holds one of them
+    scalar reach = 0;
+    for (const point& p : points)
+    {
+        reach = max(reach, neighbours_.excess(p));
+    }
+    const labelList& neighbours =
+        neighbours_.neighbours(returnReduce(reach, maxOp<scalar>()));
+
+    // Each neighbour is asked about every point and answers with those its
+    // mesh holds
+    PtrList<OListStream> questions(neighbours_.streams());
+    if (points.size())
+    {
+        for (OListStream& os : questions)
+        {
+            os  << points;
+        }
+    }
+    List<List<char>> recv;
+    neighbours_.exchange(questions, recv);
+
+    const cellLocator& locator = cellLocator::New(mesh_);
+    PtrList<OListStream> answers(neighbours_.streams());
+    forAll(recv, k)
+    {
+        if (recv[k].size())
+        {
+            UIListStream is(recv[k], IOstream::BINARY);
+            const List<point> theirs(is);
+            DynamicList<label> held;
+            forAll(theirs, i)
+            {
+                if (locator.findCell(theirs[i]) >= 0)
+                {
+                    held.append(i);
+                }
+            }
+            answers[k] << held;
+        }
+    }
+    neighbours_.exchange(answers, recv);
+
+    // The lowest holder, this processor included
+    labelList owner(points.size(), labelMax);
+    forAll(points, i)
+    {
+        if (locator.findCell(points[i]) >= 0)
+        {
+            owner[i] = Pstream::myProcNo();
+        }
+    }
+    forAll(recv, k)
+    {
+        if (recv[k].size())
+        {
+            UIListStream is(recv[k], IOstream::BINARY);
+            const labelList held(is);
+            for (const label i : held)
+            {
+                owner[i] = min(owner[i], neighbours[k]);
+            }
+        }
+    }
+    for (label& proci : owner)
+    {
+        if (proci == labelMax)
+        {
+            proci = -1;
+        }
+    }
+    return owner;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::polymer::chainDistribution::chainDistribution
@@ -130,6 +216,7 @@ Foam::polymer::chainDistribution::chainDistribution
     chains_(chains),
     sorted_(sorted),
     processorBounds_(),
+    neighbours_(periodic, processorBounds_),
     referenceCells_(-1),
     nMoved_(0),
     nWrapped_(0),
@@ -204,7 +291,7 @@ void Foam::polymer::chainDistribution::distribute()
         seconds_ += clock.elapsedTime();
         return;
     }
-    const labelList owner(pointOwners(mesh_, leavingPoints));
+    const labelList owner(neighbourOwners(leavingPoints));
 
     // Send each leaving chain to its new owner
     List<DynamicList<label>> toProc(nProcs);
@@ -243,6 +330,64 @@ void Foam::polymer::chainDistribution::move
         }
     }
 
+    // Among the neighbours alone, unless a destination is not one
+    const labelList& neighbours = neighbours_.neighbours();
+    bool general = false;
+    forAll(toProc, proci)
+    {
+        general = general || (toProc[proci].size() && !neighbours.found(proci));
+    }
+    if (returnReduce(general, orOp<bool>()))
+    {
+        moveAnywhere(toProc, sent, beadFields);
+        return;
+    }
+
+    PtrList<OListStream> send(neighbours_.streams());
+    forAll(neighbours, k)
+    {
+        const labelList& chainIndices = toProc[neighbours[k]];
+        if (chainIndices.size())
+        {
+            sendChains(send[k], chains_, chainIndices);
+            for (const DynamicList<vector>* field : beadFields)
+            {
+                send[k] << chainBeads(chains_, chainIndices, *field);
+            }
+        }
+    }
+    List<List<char>> recv;
+    neighbours_.exchange(send, recv);
+
+    for (DynamicList<vector>* field : beadFields)
+    {
+        removeBeads(chains_, sent, *field);
+    }
+    chains_.remove(sent);
+
+    forAll(recv, k)
+    {
+        if (recv[k].size())
+        {
+            UIListStream is(recv[k], IOstream::BINARY);
+            receiveChains(is, chains_);
+            for (DynamicList<vector>* field : beadFields)
+            {
+                const List<vector> values(is);
+                field->append(values);
+            }
+        }
+    }
+}
+
+
+void Foam::polymer::chainDistribution::moveAnywhere
+(
+    const List<DynamicList<label>>& toProc,
+    const labelUList& sent,
+    const UList<DynamicList<vector>*>& beadFields
+)
+{
     PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
     forAll(toProc, proci)
     {

@@ -11,7 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "collisionGroups.H"
-#include "PstreamBuffers.H"
+#include "UIListStream.H"
 #include "clockTime.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -59,41 +59,66 @@ Foam::label findRoot(Foam::labelList& parent, Foam::label i)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::List<Foam::List<Foam::boundBox>>
+Foam::polymer::collisionGroups::exchangeBoxes
+(
+    const List<boundBox>& boxes,
+    const labelUList& chainIndices
+) const
+{
+    processorNeighbours& neighbours = distribution_.neighbours();
+    PtrList<OListStream> send(neighbours.streams());
+    if (chainIndices.size())
+    {
+        const List<boundBox> mine(UIndirectList<boundBox>(boxes, chainIndices));
+        for (OListStream& os : send)
+        {
+            os  << mine;
+        }
+    }
+    List<List<char>> recv;
+    neighbours.exchange(send, recv);
+
+    List<List<boundBox>> theirs(recv.size());
+    forAll(recv, k)
+    {
+        if (recv[k].size())
+        {
+            UIListStream is(recv[k], IOstream::BINARY);
+            is  >> theirs[k];
+        }
+    }
+    return theirs;
+}
+
+
 Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
 (
     const List<boundBox>& boxes,
     bool& anyMeeting
 ) const
 {
-    const label myProc = Pstream::myProcNo();
     const List<boundBox>& procBounds = distribution_.processorBounds();
+    const labelList& neighbours = distribution_.neighbours().neighbours();
 
-    // The chains reaching into another processor's mesh bounds, from every
-    // processor
+    // The chains reaching into a neighbour's mesh bounds (no other
+    // processor's bounds are within their reach), exchanged with the
+    // neighbours
     boolList meets(boxes.size(), false);
-    List<List<boundBox>> exposed(Pstream::nProcs());
+    DynamicList<label> exposed;
+    forAll(boxes, c)
     {
-        DynamicList<boundBox> mine;
-        forAll(boxes, c)
+        for (const label proci : neighbours)
         {
-            forAll(procBounds, proci)
+            if (periodic_.overlapsImage(boxes[c], procBounds[proci]))
             {
-                if
-                (
-                    proci != myProc
-                 && periodic_.overlapsImage(boxes[c], procBounds[proci])
-                )
-                {
-                    meets[c] = true;
-                    mine.append(boxes[c]);
-                    break;
-                }
+                meets[c] = true;
+                exposed.append(c);
+                break;
             }
         }
-        exposed[myProc] = mine;
     }
-    Pstream::gatherList(exposed);
-    Pstream::scatterList(exposed);
+    const List<List<boundBox>> theirs(exchangeBoxes(boxes, exposed));
 
     // Chains that can meet an exposed chain of another processor: of any
     // pair of chains of two processors that can meet, one is exposed, so
@@ -101,13 +126,9 @@ Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
     anyMeeting = false;
     forAll(boxes, c)
     {
-        forAll(exposed, proci)
+        for (const List<boundBox>& others : theirs)
         {
-            if (proci == myProc)
-            {
-                continue;
-            }
-            for (const boundBox& other : exposed[proci])
+            for (const boundBox& other : others)
             {
                 if (periodic_.overlapsImage(boxes[c], other))
                 {
@@ -150,88 +171,100 @@ Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
 }
 
 
-Foam::List<Foam::labelList> Foam::polymer::collisionGroups::groupProcessors
+Foam::labelList Foam::polymer::collisionGroups::groupProcessors
 (
-    const List<List<boundBox>>& groupBoxes
+    const List<boundBox>& boxes,
+    const labelUList& grouped
 ) const
 {
-    // Every processor's grouped chains in one list
-    const label nProcs = Pstream::nProcs();
-    labelList offset(nProcs + 1, Zero);
-    forAll(groupBoxes, proci)
-    {
-        offset[proci + 1] = offset[proci] + groupBoxes[proci].size();
-    }
-    const label n = offset[nProcs];
-
-    // Connected by overlapping boxes (sweep along x over every box's
-    // images, so that boxes meet across cyclic patches)
-    const List<vector>& shifts = periodic_.imageShifts();
-    List<boundBox> entries(n*shifts.size());
-    labelList entryChain(entries.size());
-    forAll(groupBoxes, proci)
-    {
-        forAll(groupBoxes[proci], k)
-        {
-            const label i = offset[proci] + k;
-            forAll(shifts, s)
-            {
-                const boundBox& bb = groupBoxes[proci][k];
-                entries[i*shifts.size() + s] =
-                    boundBox(bb.min() + shifts[s], bb.max() + shifts[s]);
-                entryChain[i*shifts.size() + s] = i;
-            }
-        }
-    }
-    labelList order(entries.size());
-    {
-        scalarList minX(entries.size());
-        forAll(entries, e)
-        {
-            minX[e] = entries[e].min().x();
-        }
-        sortedOrder(minX, order);
-    }
-
+    // This processor's grouped chains joined by overlapping boxes, each
+    // component labelled by its lowest (processor, chain) pair
+    const label myProc = Pstream::myProcNo();
+    const label n = grouped.size();
     labelList parent(identity(n));
-    forAll(order, a)
+    for (label a = 0; a < n; ++a)
     {
-        const boundBox& bbA = entries[order[a]];
-        for (label b = a + 1; b < order.size(); ++b)
+        for (label b = a + 1; b < n; ++b)
         {
-            const boundBox& bbB = entries[order[b]];
-            if (bbB.min().x() > bbA.max().x())
+            if
+            (
+                periodic_.overlapsImage(boxes[grouped[a]], boxes[grouped[b]])
+            )
             {
-                break;
-            }
-            if (bbA.overlaps(bbB))
-            {
-                parent[findRoot(parent, entryChain[order[a]])] =
-                    findRoot(parent, entryChain[order[b]]);
+                parent[findRoot(parent, a)] = findRoot(parent, b);
             }
         }
     }
-
-    // Each group to the lowest processor owning one of its chains
-    labelList groupProc(n, labelMax);
-    forAll(groupBoxes, proci)
+    labelList root(n);
+    List<labelPair> componentLabel(n, labelPair(labelMax, labelMax));
+    forAll(root, k)
     {
-        for (label i = offset[proci]; i < offset[proci + 1]; ++i)
+        root[k] = findRoot(parent, k);
+        const labelPair own(myProc, k);
+        if (own < componentLabel[root[k]])
         {
-            label& proc = groupProc[findRoot(parent, i)];
-            proc = min(proc, proci);
+            componentLabel[root[k]] = own;
         }
     }
 
-    List<labelList> destination(nProcs);
-    forAll(groupBoxes, proci)
+    // The lowest label of every component spanning several processors
+    // spreads along the overlaps between neighbours' grouped chains,
+    // until no label falls anywhere: the component then goes whole to
+    // its lowest processor, as one processor forming every group would
+    // send it
+    processorNeighbours& neighbours = distribution_.neighbours();
+    const List<boundBox> groupedBoxes(UIndirectList<boundBox>(boxes, grouped));
+    for (bool falling = true; falling; )
     {
-        destination[proci].setSize(groupBoxes[proci].size());
-        forAll(destination[proci], k)
+        PtrList<OListStream> send(neighbours.streams());
+        if (n)
         {
-            destination[proci][k] =
-                groupProc[findRoot(parent, offset[proci] + k)];
+            const List<labelPair> labels
+            (
+                UIndirectList<labelPair>(componentLabel, root)
+            );
+            for (OListStream& os : send)
+            {
+                os  << groupedBoxes << labels;
+            }
         }
+        List<List<char>> recv;
+        neighbours.exchange(send, recv);
+
+        falling = false;
+        forAll(recv, j)
+        {
+            if (recv[j].empty())
+            {
+                continue;
+            }
+            UIListStream is(recv[j], IOstream::BINARY);
+            const List<boundBox> theirBoxes(is);
+            const List<labelPair> theirLabels(is);
+            forAll(theirBoxes, i)
+            {
+                forAll(root, k)
+                {
+                    labelPair& mine = componentLabel[root[k]];
+                    if
+                    (
+                        theirLabels[i] < mine
+                     && periodic_.overlapsImage(groupedBoxes[k], theirBoxes[i])
+                    )
+                    {
+                        mine = theirLabels[i];
+                        falling = true;
+                    }
+                }
+            }
+        }
+        reduce(falling, orOp<bool>());
+    }
+
+    labelList destination(n);
+    forAll(destination, k)
+    {
+        destination[k] = componentLabel[root[k]].first();
     }
     return destination;
 }
@@ -266,11 +299,17 @@ void Foam::polymer::collisionGroups::group
     const scalar margin =
         2*Foam::sqrt(returnReduce(displacement, maxOp<scalar>()));
 
+    // The boxes, and the neighbours for their reach beyond this
+    // processor's bounds
+    const boundBox& myBounds = distribution_.processorBounds()[myProc];
     List<boundBox> boxes(chains_.nChains());
+    scalar reach = 0;
     forAll(boxes, c)
     {
         boxes[c] = sweptBox(chains_, c, positionsOld, margin);
+        reach = max(reach, processorNeighbours::excess(boxes[c], myBounds));
     }
+    distribution_.neighbours().neighbours(returnReduce(reach, maxOp<scalar>()));
     bool anyMeeting = false;
     const boolList meets(chainsMeetingOthers(boxes, anyMeeting));
     if (!anyMeeting)
@@ -281,36 +320,23 @@ void Foam::polymer::collisionGroups::group
         return;
     }
 
-    // The groups, formed on the master
+    // The groups, formed among the neighbours
     DynamicList<label> grouped;
-    List<List<boundBox>> groupBoxes(Pstream::nProcs());
+    forAll(meets, c)
     {
-        DynamicList<boundBox> mine;
-        forAll(meets, c)
+        if (meets[c])
         {
-            if (meets[c])
-            {
-                grouped.append(c);
-                mine.append(boxes[c]);
-            }
+            grouped.append(c);
         }
-        groupBoxes[myProc] = mine;
     }
-    Pstream::gatherList(groupBoxes);
-    List<labelList> destination(Pstream::nProcs());
-    if (Pstream::master())
-    {
-        destination = groupProcessors(groupBoxes);
-    }
-    // (the whole list: scatterList sends a processor only the others')
-    Pstream::scatter(destination);
+    const labelList destination(groupProcessors(boxes, grouped));
 
     // Each grouped chain, with its step's start, to its group's processor
     List<DynamicList<label>> toProc(Pstream::nProcs());
     DynamicList<label> sent;
     forAll(grouped, k)
     {
-        const label proci = destination[myProc][k];
+        const label proci = destination[k];
         if (proci != myProc)
         {
             toProc[proci].append(grouped[k]);
