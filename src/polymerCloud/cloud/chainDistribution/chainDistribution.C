@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "chainDistribution.H"
+#include "allReduce.H"
 #include "PstreamBuffers.H"
 #include "pointField.H"
 #include "clockTime.H"
@@ -133,7 +134,7 @@ Foam::labelList Foam::polymer::chainDistribution::neighbourOwners
         reach = max(reach, neighbours_.excess(p));
     }
     const labelList& neighbours =
-        neighbours_.neighbours(returnReduce(reach, maxOp<scalar>()));
+        neighbours_.neighbours(allReduceMax(reach));
 
     // Each neighbour is asked about every point and answers with those its
     // mesh holds
@@ -225,7 +226,10 @@ Foam::polymer::chainDistribution::chainDistribution
     if (Pstream::parRun())
     {
         processorBounds_.setSize(Pstream::nProcs());
-        processorBounds_[Pstream::myProcNo()] = mesh_.bounds();
+        // This processor's own (polyMesh::bounds() is every
+        // processor's together)
+        processorBounds_[Pstream::myProcNo()] =
+            boundBox(mesh_.points(), false);
         Pstream::gatherList(processorBounds_);
         Pstream::scatterList(processorBounds_);
     }
@@ -243,7 +247,10 @@ Foam::polymer::chainDistribution::locateReferenceBeads(const bool unknownOnly)
     }
 
     const cellLocator& locator = cellLocator::New(mesh_);
-    const boundBox& bounds = mesh_.bounds();
+    const boundBox& bounds =
+        Pstream::parRun()
+      ? processorBounds_[Pstream::myProcNo()]
+      : mesh_.bounds();
     const List<vector>& x = chains_.positions();
     labelList& cell = referenceCells_.update(chains_);
     for (label c = 0; c < chains_.nChains(); ++c)
@@ -286,7 +293,7 @@ void Foam::polymer::chainDistribution::distribute()
             leavingPoints.append(periodic_.wrap(x[i]));
         }
     }
-    if (returnReduce(leaving.empty(), andOp<bool>()))
+    if (allReduceAnd(leaving.empty()))
     {
         seconds_ += clock.elapsedTime();
         return;
@@ -306,7 +313,7 @@ void Foam::polymer::chainDistribution::distribute()
         }
     }
 
-    move(toProc, sent, UList<DynamicList<vector>*>());
+    move(toProc, sent, UList<DynamicList<vector>*>(), neighbours_);
     nMoved_ += sent.size();
     seconds_ += clock.elapsedTime();
 }
@@ -316,7 +323,8 @@ void Foam::polymer::chainDistribution::move
 (
     const List<DynamicList<label>>& toProc,
     const labelUList& sent,
-    const UList<DynamicList<vector>*>& beadFields
+    const UList<DynamicList<vector>*>& beadFields,
+    const processorNeighbours& neighbourExchange
 )
 {
     for (const DynamicList<vector>* field : beadFields)
@@ -331,19 +339,19 @@ void Foam::polymer::chainDistribution::move
     }
 
     // Among the neighbours alone, unless a destination is not one
-    const labelList& neighbours = neighbours_.neighbours();
+    const labelList& neighbours = neighbourExchange.neighbours();
     bool general = false;
     forAll(toProc, proci)
     {
         general = general || (toProc[proci].size() && !neighbours.found(proci));
     }
-    if (returnReduce(general, orOp<bool>()))
+    if (allReduceOr(general))
     {
         moveAnywhere(toProc, sent, beadFields);
         return;
     }
 
-    PtrList<OListStream> send(neighbours_.streams());
+    PtrList<OListStream> send(neighbourExchange.streams());
     forAll(neighbours, k)
     {
         const labelList& chainIndices = toProc[neighbours[k]];
@@ -357,7 +365,7 @@ void Foam::polymer::chainDistribution::move
         }
     }
     List<List<char>> recv;
-    neighbours_.exchange(send, recv);
+    neighbourExchange.exchange(send, recv);
 
     for (DynamicList<vector>* field : beadFields)
     {

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "chainStepper.H"
+#include "allReduce.H"
 #include "Time.H"
 #include "isFinite.H"
 
@@ -334,9 +335,9 @@ Foam::label Foam::polymer::chainStepper::subCycles(const scalar deltaT)
             ++nCycles;
         }
     }
-    reduce(nCycles, maxOp<label>());
-    reduce(largest, maxOp<scalar>());
-    reduce(capped, orOp<bool>());
+    nCycles = allReduceMax(nCycles);
+    largest = allReduceMax(largest);
+    capped = allReduceOr(capped);
 
     if (!flowSteps_)
     {

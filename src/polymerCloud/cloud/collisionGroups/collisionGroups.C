@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "collisionGroups.H"
+#include "allReduce.H"
 #include "UIListStream.H"
 #include "clockTime.H"
 
@@ -66,8 +67,7 @@ Foam::polymer::collisionGroups::exchangeBoxes
     const labelUList& chainIndices
 ) const
 {
-    processorNeighbours& neighbours = distribution_.neighbours();
-    PtrList<OListStream> send(neighbours.streams());
+    PtrList<OListStream> send(neighbours_.streams());
     if (chainIndices.size())
     {
         const List<boundBox> mine(UIndirectList<boundBox>(boxes, chainIndices));
@@ -77,7 +77,7 @@ Foam::polymer::collisionGroups::exchangeBoxes
         }
     }
     List<List<char>> recv;
-    neighbours.exchange(send, recv);
+    neighbours_.exchange(send, recv);
 
     List<List<boundBox>> theirs(recv.size());
     forAll(recv, k)
@@ -99,7 +99,7 @@ Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
 ) const
 {
     const List<boundBox>& procBounds = distribution_.processorBounds();
-    const labelList& neighbours = distribution_.neighbours().neighbours();
+    const labelList& neighbours = neighbours_.neighbours();
 
     // The chains reaching into a neighbour's mesh bounds (no other
     // processor's bounds are within their reach), exchanged with the
@@ -139,7 +139,7 @@ Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
             }
         }
     }
-    reduce(anyMeeting, orOp<bool>());
+    anyMeeting = allReduceOr(anyMeeting);
     if (!anyMeeting)
     {
         return meets;
@@ -212,11 +212,10 @@ Foam::labelList Foam::polymer::collisionGroups::groupProcessors
     // until no label falls anywhere: the component then goes whole to
     // its lowest processor, as one processor forming every group would
     // send it
-    processorNeighbours& neighbours = distribution_.neighbours();
     const List<boundBox> groupedBoxes(UIndirectList<boundBox>(boxes, grouped));
     for (bool falling = true; falling; )
     {
-        PtrList<OListStream> send(neighbours.streams());
+        PtrList<OListStream> send(neighbours_.streams());
         if (n)
         {
             const List<labelPair> labels
@@ -229,7 +228,7 @@ Foam::labelList Foam::polymer::collisionGroups::groupProcessors
             }
         }
         List<List<char>> recv;
-        neighbours.exchange(send, recv);
+        neighbours_.exchange(send, recv);
 
         falling = false;
         forAll(recv, j)
@@ -258,7 +257,7 @@ Foam::labelList Foam::polymer::collisionGroups::groupProcessors
                 }
             }
         }
-        reduce(falling, orOp<bool>());
+        falling = allReduceOr(falling);
     }
 
     labelList destination(n);
@@ -297,7 +296,7 @@ void Foam::polymer::collisionGroups::group
         );
     }
     const scalar margin =
-        2*Foam::sqrt(returnReduce(displacement, maxOp<scalar>()));
+        2*Foam::sqrt(allReduceMax(displacement));
 
     // The boxes, and the neighbours for their reach beyond this
     // processor's bounds
@@ -309,7 +308,9 @@ void Foam::polymer::collisionGroups::group
         boxes[c] = sweptBox(chains_, c, positionsOld, margin);
         reach = max(reach, processorNeighbours::excess(boxes[c], myBounds));
     }
-    distribution_.neighbours().neighbours(returnReduce(reach, maxOp<scalar>()));
+    // (two boxes meet only if their processors' bounds are within the sum
+    // of their reaches)
+    neighbours_.neighbours(2*allReduceMax(reach));
     bool anyMeeting = false;
     const boolList meets(chainsMeetingOthers(boxes, anyMeeting));
     if (!anyMeeting)
@@ -347,7 +348,8 @@ void Foam::polymer::collisionGroups::group
     (
         toProc,
         sent,
-        List<DynamicList<vector>*>({&positionsOld, &velocitiesOld})
+        List<DynamicList<vector>*>({&positionsOld, &velocitiesOld}),
+        neighbours_
     );
     nGrouped_ += sent.size();
 

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "polymerCloud.H"
+#include "allReduce.H"
 #include "writeStatus.H"
 #include "OStringStream.H"
 #include "Tuple2.H"
@@ -33,7 +34,7 @@ namespace polymer
 void Foam::polymer::polymerCloud::removeEscapedChains()
 {
     const DynamicList<label>& beads = wall_->escapedBeads();
-    if (returnReduce(beads.empty(), andOp<bool>()))
+    if (allReduceAnd(beads.empty()))
     {
         return;
     }

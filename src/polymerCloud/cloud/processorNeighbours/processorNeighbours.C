@@ -22,10 +22,10 @@ void Foam::polymer::processorNeighbours::formNeighbours()
     const vector grow(vector::uniform(reach_));
     const boundBox& mine = processorBounds_[myProc];
 
-    // A processor without cells is every processor's neighbour; otherwise
-    // the test is made in the same order on both sides (the lower
-    // processor's box first), so that the relation is symmetric to the
-    // last bit
+    // Bounds within reach_ of each other along every axis (the lower
+    // processor's grown). A processor without cells is every processor's
+    // neighbour; otherwise the test is made in the same order on both
+    // sides, so that the relation is symmetric to the last bit
     DynamicList<label> neighbours;
     forAll(processorBounds_, proci)
     {
@@ -46,7 +46,7 @@ void Foam::polymer::processorNeighbours::formNeighbours()
             periodic_.overlapsImage
             (
                 boundBox(lower.min() - grow, lower.max() + grow),
-                boundBox(upper.min() - grow, upper.max() + grow)
+                upper
             )
         )
         {
@@ -109,9 +109,9 @@ Foam::scalar Foam::polymer::processorNeighbours::excess(const point& p) const
 const Foam::labelList&
 Foam::polymer::processorNeighbours::neighbours(const scalar reach)
 {
-    if (reach > reach_ || reach < 0.25*reach_)
+    if (reach > reach_ || reach < 0.5*reach_)
     {
-        reach_ = 1.25*reach;
+        reach_ = 1.1*reach;
         formNeighbours();
     }
     return neighbours_;

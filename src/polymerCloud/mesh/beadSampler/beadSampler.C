@@ -81,6 +81,7 @@ Foam::polymer::beadSampler::beadSampler(const fvMesh& mesh)
     mesh_(mesh),
     locator_(cellLocator::New(mesh)),
     periodic_(periodicImages::New(mesh)),
+    bounds_(mesh.points(), false),
     remoteOwners_(-1),
     remoteTets_(tetIndices()),
     unheld_(),
@@ -126,7 +127,7 @@ Foam::List<Foam::tetIndices> Foam::polymer::beadSampler::askTets
     requests.finishedSends(recvSizes);
 
     // Answer the others' requests, keeping the tets found for sample
-    const boundBox& bounds = mesh_.bounds();
+    const boundBox& bounds = bounds_;
     PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
     forAll(recvSizes, proci)
     {
@@ -185,7 +186,7 @@ void Foam::polymer::beadSampler::locateRemote
     if (processorBounds_.empty())
     {
         processorBounds_.setSize(Pstream::nProcs());
-        processorBounds_[Pstream::myProcNo()] = mesh_.bounds();
+        processorBounds_[Pstream::myProcNo()] = bounds_;
         Pstream::gatherList(processorBounds_);
         Pstream::scatterList(processorBounds_);
     }
@@ -259,7 +260,7 @@ void Foam::polymer::beadSampler::locate(const polymerChains& chains)
     // A bead outside this processor's bounding box is in another's mesh,
     // or in none: no search here. The search starts from the tet that
     // held the bead at the last locate
-    const boundBox& bounds = mesh_.bounds();
+    const boundBox& bounds = bounds_;
     forAll(x, i)
     {
         const point p = periodic_.wrap(x[i]);
