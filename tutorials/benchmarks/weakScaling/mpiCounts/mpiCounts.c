@@ -8,6 +8,7 @@ Description
     it contributes), and at MPI_Finalize writes them with the rank's peak
     resident memory to mpiCounts.<rank> in the working directory:
         rank sends sendBytes partners collectives collectiveBytes maxRSSkB
+    and on a second line the messages sent to each rank, 0 to size - 1.
     Build: mpicc -O2 -shared -fPIC -o libmpiCounts.so mpiCounts.c
     Use:   mpirun -x LD_PRELOAD=$PWD/libmpiCounts.so ...
 \*---------------------------------------------------------------------------*/
@@ -19,7 +20,7 @@ Description
 #define MAX_RANKS 4096
 
 static long long sends = 0, sendBytes = 0, collectives = 0, collectiveBytes = 0;
-static unsigned char partner[MAX_RANKS];
+static long long partner[MAX_RANKS];
 
 static long long bytesOf(int count, MPI_Datatype type)
 {
@@ -34,7 +35,7 @@ static void sent(int count, MPI_Datatype type, int dest)
     sendBytes += bytesOf(count, type);
     if (dest >= 0 && dest < MAX_RANKS)
     {
-        partner[dest] = 1;
+        ++partner[dest];
     }
 }
 
@@ -128,15 +129,16 @@ int MPI_Scatterv
 
 int MPI_Finalize(void)
 {
-    int rank = 0, i, nPartners = 0;
+    int rank = 0, size = 1, i, nPartners = 0;
     char name[64];
     struct rusage usage;
     FILE* out;
 
     PMPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    PMPI_Comm_size(MPI_COMM_WORLD, &size);
     for (i = 0; i < MAX_RANKS; ++i)
     {
-        nPartners += partner[i];
+        nPartners += (partner[i] > 0);
     }
     getrusage(RUSAGE_SELF, &usage);
     snprintf(name, sizeof(name), "mpiCounts.%d", rank);
@@ -148,6 +150,11 @@ int MPI_Finalize(void)
             out, "%d %lld %lld %d %lld %lld %ld\n", rank, sends, sendBytes,
             nPartners, collectives, collectiveBytes, usage.ru_maxrss
         );
+        for (i = 0; i < size && i < MAX_RANKS; ++i)
+        {
+            fprintf(out, "%s%lld", i ? " " : "", partner[i]);
+        }
+        fprintf(out, "\n");
         fclose(out);
     }
     return PMPI_Finalize();
