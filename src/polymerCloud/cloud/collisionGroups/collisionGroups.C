@@ -101,21 +101,29 @@ Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
     const List<boundBox>& procBounds = distribution_.processorBounds();
     const labelList& neighbours = neighbours_.neighbours();
 
-    // The chains reaching into a neighbour's mesh bounds (no other
-    // processor's bounds are within their reach), exchanged with the
-    // neighbours
+    // The chains reaching beyond this processor's mesh bounds or into a
+    // neighbour's (no other processor's bounds are within their reach),
+    // exchanged with the neighbours. Two boxes of chains of processors p
+    // and q meet at a point x: outside q's bounds, q's chain reaches
+    // beyond them; inside, p's chain reaches into them
+    const boundBox& myBounds = procBounds[Pstream::myProcNo()];
     boolList meets(boxes.size(), false);
     DynamicList<label> exposed;
     forAll(boxes, c)
     {
+        bool reaches =
+            !myBounds.contains(boxes[c].min())
+         || !myBounds.contains(boxes[c].max());
         for (const label proci : neighbours)
         {
-            if (periodic_.overlapsImage(boxes[c], procBounds[proci]))
-            {
-                meets[c] = true;
-                exposed.append(c);
-                break;
-            }
+            reaches =
+                reaches
+             || periodic_.overlapsImage(boxes[c], procBounds[proci]);
+        }
+        if (reaches)
+        {
+            meets[c] = true;
+            exposed.append(c);
         }
     }
     const List<List<boundBox>> theirs(exchangeBoxes(boxes, exposed));
