@@ -119,89 +119,6 @@ void removeBeads
 } // End anonymous namespace
 
 
-// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::labelList Foam::polymer::chainDistribution::neighbourOwners
-(
-    const UList<point>& points
-)
-{
-    // The neighbours for the points' reach beyond this processor's bounds:
-    // any processor whose mesh holds one of them
-    scalar reach = 0;
-    for (const point& p : points)
-    {
-        reach = max(reach, neighbours_.excess(p));
-    }
-    const labelList& neighbours =
-        neighbours_.neighbours(allReduceMax(reach));
-
-    // Each neighbour is asked about every point and answers with those its
-    // mesh holds
-    PtrList<OListStream> questions(neighbours_.streams());
-    if (points.size())
-    {
-        for (OListStream& os : questions)
-        {
-            os  << points;
-        }
-    }
-    List<List<char>> recv;
-    neighbours_.exchange(questions, recv);
-
-    const cellLocator& locator = cellLocator::New(mesh_);
-    PtrList<OListStream> answers(neighbours_.streams());
-    forAll(recv, k)
-    {
-        if (recv[k].size())
-        {
-            UIListStream is(recv[k], IOstream::BINARY);
-            const List<point> theirs(is);
-            DynamicList<label> held;
-            forAll(theirs, i)
-            {
-                if (locator.findCell(theirs[i]) >= 0)
-                {
-                    held.append(i);
-                }
-            }
-            answers[k] << held;
-        }
-    }
-    neighbours_.exchange(answers, recv);
-
-    // The lowest holder, this processor included
-    labelList owner(points.size(), labelMax);
-    forAll(points, i)
-    {
-        if (locator.findCell(points[i]) >= 0)
-        {
-            owner[i] = Pstream::myProcNo();
-        }
-    }
-    forAll(recv, k)
-    {
-        if (recv[k].size())
-        {
-            UIListStream is(recv[k], IOstream::BINARY);
-            const labelList held(is);
-            for (const label i : held)
-            {
-                owner[i] = min(owner[i], neighbours[k]);
-            }
-        }
-    }
-    for (label& proci : owner)
-    {
-        if (proci == labelMax)
-        {
-            proci = -1;
-        }
-    }
-    return owner;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::polymer::chainDistribution::chainDistribution
@@ -216,24 +133,12 @@ Foam::polymer::chainDistribution::chainDistribution
     periodic_(periodic),
     chains_(chains),
     sorted_(sorted),
-    processorBounds_(),
-    neighbours_(periodic, processorBounds_),
+    neighbours_(mesh),
     referenceCells_(-1),
     nMoved_(0),
     nWrapped_(0),
     seconds_(0)
-{
-    if (Pstream::parRun())
-    {
-        processorBounds_.setSize(Pstream::nProcs());
-        // This processor's own (polyMesh::bounds() is every
-        // processor's together)
-        processorBounds_[Pstream::myProcNo()] =
-            boundBox(mesh_.points(), false);
-        Pstream::gatherList(processorBounds_);
-        Pstream::scatterList(processorBounds_);
-    }
-}
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -247,10 +152,7 @@ Foam::polymer::chainDistribution::locateReferenceBeads(const bool unknownOnly)
     }
 
     const cellLocator& locator = cellLocator::New(mesh_);
-    const boundBox& bounds =
-        Pstream::parRun()
-      ? processorBounds_[Pstream::myProcNo()]
-      : mesh_.bounds();
+    const boundBox& bounds = neighbours_.localBounds();
     const List<vector>& x = chains_.positions();
     labelList& cell = referenceCells_.update(chains_);
     for (label c = 0; c < chains_.nChains(); ++c)
@@ -298,7 +200,7 @@ void Foam::polymer::chainDistribution::distribute()
         seconds_ += clock.elapsedTime();
         return;
     }
-    const labelList owner(neighbourOwners(leavingPoints));
+    const labelList owner(neighbours_.pointOwners(leavingPoints));
 
     // Send each leaving chain to its new owner
     List<DynamicList<label>> toProc(nProcs);
@@ -434,13 +336,11 @@ void Foam::polymer::chainDistribution::moveAnywhere
 }
 
 
-void Foam::polymer::chainDistribution::keepOwn(const label firstChain)
+void Foam::polymer::chainDistribution::keepOwnReplicated
+(
+    const label firstChain
+)
 {
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-
     const List<vector>& x = chains_.positions();
     pointField references(chains_.nChains() - firstChain);
     forAll(references, k)
@@ -457,6 +357,65 @@ void Foam::polymer::chainDistribution::keepOwn(const label firstChain)
         if (proci != Pstream::myProcNo())
         {
             others.append(firstChain + k);
+        }
+    }
+    chains_.remove(others);
+}
+
+
+void Foam::polymer::chainDistribution::keepOwn(const label firstChain)
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    // The chains whose reference bead lies in this processor's bounds:
+    // only this processor and its neighbours can hold it
+    const List<vector>& x = chains_.positions();
+    const boundBox& bounds = neighbours_.localBounds();
+    DynamicList<label> candidates;
+    DynamicList<point> references;
+    for (label c = firstChain; c < chains_.nChains(); ++c)
+    {
+        const point p = periodic_.wrap(x[chains_.referenceBead(c)]);
+        if (bounds.contains(p))
+        {
+            candidates.append(c);
+            references.append(p);
+        }
+    }
+    const labelList owner(neighbours_.pointOwners(references));
+
+    // Every chain kept once, unless one is outside every mesh (the master
+    // keeps those: all processors must then look at all chains)
+    label nKept = 0;
+    forAll(owner, k)
+    {
+        nKept += (owner[k] == Pstream::myProcNo());
+    }
+    scalar nKeptAll = nKept;
+    reduce(nKeptAll, sumOp<scalar>());
+    if (label(nKeptAll) != chains_.nChains() - firstChain)
+    {
+        keepOwnReplicated(firstChain);
+        return;
+    }
+
+    bitSet mine(chains_.nChains());
+    forAll(owner, k)
+    {
+        if (owner[k] == Pstream::myProcNo())
+        {
+            mine.set(candidates[k]);
+        }
+    }
+    DynamicList<label> others;
+    for (label c = firstChain; c < chains_.nChains(); ++c)
+    {
+        if (!mine.test(c))
+        {
+            others.append(c);
         }
     }
     chains_.remove(others);

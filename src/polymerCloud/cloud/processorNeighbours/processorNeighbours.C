@@ -13,6 +13,9 @@ License
 #include "processorNeighbours.H"
 #include "UIPstream.H"
 #include "UOPstream.H"
+#include "UIListStream.H"
+#include "cellLocator.H"
+#include "allReduce.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -59,14 +62,11 @@ void Foam::polymer::processorNeighbours::formNeighbours()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::polymer::processorNeighbours::processorNeighbours
-(
-    const periodicImages& periodic,
-    const List<boundBox>& processorBounds
-)
+Foam::polymer::processorNeighbours::processorNeighbours(const polyMesh& mesh)
 :
-    periodic_(periodic),
-    processorBounds_(processorBounds),
+    mesh_(mesh),
+    periodic_(periodicImages::New(mesh)),
+    processorBounds_(processorBounds::New(mesh).bounds()),
     reach_(-1),
     neighbours_()
 {}
@@ -202,6 +202,86 @@ void Foam::polymer::processorNeighbours::exchange
         }
     }
     UPstream::waitRequests(start);
+}
+
+
+Foam::labelList Foam::polymer::processorNeighbours::pointOwners
+(
+    const UList<point>& points
+)
+{
+    // The neighbours for the points' reach beyond this processor's bounds:
+    // any processor whose mesh holds one of them
+    scalar reach = 0;
+    for (const point& p : points)
+    {
+        reach = max(reach, excess(p));
+    }
+    neighbours(allReduceMax(reach));
+
+    // Each neighbour is asked about every point and answers with those its
+    // mesh holds
+    PtrList<OListStream> questions(streams());
+    if (points.size())
+    {
+        for (OListStream& os : questions)
+        {
+            os  << points;
+        }
+    }
+    List<List<char>> recv;
+    exchange(questions, recv);
+
+    const cellLocator& locator = cellLocator::New(mesh_);
+    PtrList<OListStream> answers(streams());
+    forAll(recv, k)
+    {
+        if (recv[k].size())
+        {
+            UIListStream is(recv[k], IOstream::BINARY);
+            const List<point> theirs(is);
+            DynamicList<label> held;
+            forAll(theirs, i)
+            {
+                if (locator.findCell(theirs[i]) >= 0)
+                {
+                    held.append(i);
+                }
+            }
+            answers[k] << held;
+        }
+    }
+    exchange(answers, recv);
+
+    // The lowest holder, this processor included
+    labelList owner(points.size(), labelMax);
+    forAll(points, i)
+    {
+        if (locator.findCell(points[i]) >= 0)
+        {
+            owner[i] = Pstream::myProcNo();
+        }
+    }
+    forAll(recv, k)
+    {
+        if (recv[k].size())
+        {
+            UIListStream is(recv[k], IOstream::BINARY);
+            const labelList held(is);
+            for (const label i : held)
+            {
+                owner[i] = min(owner[i], neighbours_[k]);
+            }
+        }
+    }
+    for (label& proci : owner)
+    {
+        if (proci == labelMax)
+        {
+            proci = -1;
+        }
+    }
+    return owner;
 }
 
 

@@ -11,7 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "chainStatistics.H"
-#include "pointOwners.H"
+#include "processorNeighbours.H"
 #include "cellLocator.H"
 #include "periodicImages.H"
 #include "polymerCloud.H"
@@ -124,7 +124,7 @@ Foam::label Foam::polymer::cloudFunctions::chainStatistics::rodsOutside() const
     {
         return unheld.size();
     }
-    const labelList owner(pointOwners(mesh, unheld));
+    const labelList owner(processorNeighbours(mesh).pointOwners(unheld));
     return std::count(owner.cbegin(), owner.cend(), -1);
 }
 

@@ -13,6 +13,9 @@ License
 #include "randomWalk.H"
 #include "periodicImages.H"
 #include "pointOwners.H"
+#include "processorNeighbours.H"
+#include "HashSet.H"
+#include "ListOps.H"
 #include "chainNoise.H"
 #include "checkedInput.H"
 #include "mathematicalConstants.H"
@@ -113,6 +116,37 @@ Foam::polymer::initialisationModels::randomWalk::walks
 }
 
 
+Foam::labelList Foam::polymer::initialisationModels::randomWalk::judgedHere
+(
+    const UList<List<point>>& x,
+    const labelUList& drawing,
+    const periodicImages& periodic,
+    const processorNeighbours& neighbours
+)
+{
+    const boundBox& bounds = neighbours.localBounds();
+    DynamicList<label> judged;
+    for (const label n : drawing)
+    {
+        const point p = periodic.wrap(x[n][x[n].size()/2]);
+        bool judge = bounds.contains(p);
+        if (!judge && Pstream::master())
+        {
+            judge = true;
+            for (const boundBox& bb : neighbours.processorBounds())
+            {
+                judge = judge && !bb.contains(p);
+            }
+        }
+        if (judge)
+        {
+            judged.append(n);
+        }
+    }
+    return labelList(judged);
+}
+
+
 Foam::List<Foam::List<Foam::point>>
 Foam::polymer::initialisationModels::randomWalk::walksInside
 (
@@ -130,22 +164,38 @@ Foam::polymer::initialisationModels::randomWalk::walksInside
     // The beads' images inside the cyclic patches are what must be in
     // the mesh
     const periodicImages& periodic = periodicImages::New(mesh);
+    autoPtr<processorNeighbours> neighbours;
+    if (Pstream::parRun())
+    {
+        neighbours.reset(new processorNeighbours(mesh));
+    }
     labelList drawing(identity(nChains));
     for (label attempt = 1; drawing.size(); ++attempt)
     {
-        pointField images(drawing.size()*type.nBeads());
+        const labelList judged
+        (
+            neighbours.valid()
+          ? judgedHere(x, drawing, periodic, neighbours())
+          : drawing
+        );
+        pointField images(judged.size()*type.nBeads());
         label k = 0;
-        for (const label n : drawing)
+        for (const label n : judged)
         {
             for (const point& p : x[n])
             {
                 images[k++] = periodic.wrap(p);
             }
         }
-        const labelList owners(replicatedPointOwners(mesh, images));
+        const labelList owners
+        (
+            neighbours.valid()
+          ? neighbours->pointOwners(images)
+          : replicatedPointOwners(mesh, images)
+        );
 
         DynamicList<label> outside;
-        forAll(drawing, j)
+        forAll(judged, j)
         {
             const SubList<label> beadOwners
             (
@@ -153,10 +203,22 @@ Foam::polymer::initialisationModels::randomWalk::walksInside
             );
             if (beadOwners.found(-1))
             {
-                outside.append(drawing[j]);
+                outside.append(judged[j]);
             }
         }
-        drawing.transfer(outside);
+        if (neighbours.valid())
+        {
+            // Every processor's, in order (a chain judged by two
+            // processors is judged alike)
+            labelList all(outside);
+            Pstream::combineGather(all, ListOps::appendEqOp<label>());
+            Pstream::combineScatter(all);
+            drawing = labelHashSet(all).sortedToc();
+        }
+        else
+        {
+            drawing.transfer(outside);
+        }
 
         if (drawing.size() && attempt == 1000)
         {
