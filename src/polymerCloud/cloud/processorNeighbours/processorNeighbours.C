@@ -219,14 +219,25 @@ Foam::labelList Foam::polymer::processorNeighbours::pointOwners
     }
     neighbours(allReduceMax(reach));
 
-    // Each neighbour is asked about every point and answers with those its
-    // mesh holds
+    // Each neighbour is asked about the points in its bounds (no other
+    // can be in its mesh) and answers with those its mesh holds
+    List<labelList> asked(neighbours_.size());
     PtrList<OListStream> questions(streams());
-    if (points.size())
+    forAll(neighbours_, k)
     {
-        for (OListStream& os : questions)
+        const boundBox& theirs = processorBounds_[neighbours_[k]];
+        DynamicList<label> inside;
+        forAll(points, i)
         {
-            os  << points;
+            if (!theirs.valid() || theirs.contains(points[i]))
+            {
+                inside.append(i);
+            }
+        }
+        asked[k].transfer(inside);
+        if (asked[k].size())
+        {
+            questions[k] << UIndirectList<point>(points, asked[k])();
         }
     }
     List<List<char>> recv;
@@ -268,9 +279,10 @@ Foam::labelList Foam::polymer::processorNeighbours::pointOwners
         {
             UIListStream is(recv[k], IOstream::BINARY);
             const labelList held(is);
-            for (const label i : held)
+            for (const label j : held)
             {
-                owner[i] = min(owner[i], neighbours_[k]);
+                label& proci = owner[asked[k][j]];
+                proci = min(proci, neighbours_[k]);
             }
         }
     }
