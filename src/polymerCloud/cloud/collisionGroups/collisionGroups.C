@@ -219,47 +219,63 @@ Foam::labelList Foam::polymer::collisionGroups::groupProcessors
     // spreads along the overlaps between neighbours' grouped chains,
     // until no label falls anywhere: the component then goes whole to
     // its lowest processor, as one processor forming every group would
-    // send it
+    // send it. The first round sends the boxes with the labels, later
+    // rounds the labels alone, whose number each neighbour then knows
     const List<boundBox> groupedBoxes(UIndirectList<boundBox>(boxes, grouped));
-    for (bool falling = true; falling; )
+    List<List<boundBox>> theirBoxes(neighbours_.neighbours().size());
+    List<List<labelPair>> theirLabels(theirBoxes.size());
+    for (bool first = true, falling = true; falling; first = false)
     {
-        PtrList<OListStream> send(neighbours_.streams());
-        if (n)
+        const List<labelPair> labels
+        (
+            UIndirectList<labelPair>(componentLabel, root)
+        );
+        if (first)
         {
-            const List<labelPair> labels
-            (
-                UIndirectList<labelPair>(componentLabel, root)
-            );
-            for (OListStream& os : send)
+            PtrList<OListStream> send(neighbours_.streams());
+            if (n)
             {
-                os  << groupedBoxes << labels;
+                for (OListStream& os : send)
+                {
+                    os  << groupedBoxes << labels;
+                }
+            }
+            List<List<char>> recv;
+            neighbours_.exchange(send, recv);
+            forAll(recv, j)
+            {
+                if (recv[j].size())
+                {
+                    UIListStream is(recv[j], IOstream::BINARY);
+                    is  >> theirBoxes[j] >> theirLabels[j];
+                }
             }
         }
-        List<List<char>> recv;
-        neighbours_.exchange(send, recv);
+        else
+        {
+            const List<List<labelPair>> send(theirBoxes.size(), labels);
+            neighbours_.exchangeKnownSizes(send, theirLabels);
+        }
 
         falling = false;
-        forAll(recv, j)
+        forAll(theirBoxes, j)
         {
-            if (recv[j].empty())
-            {
-                continue;
-            }
-            UIListStream is(recv[j], IOstream::BINARY);
-            const List<boundBox> theirBoxes(is);
-            const List<labelPair> theirLabels(is);
-            forAll(theirBoxes, i)
+            forAll(theirBoxes[j], i)
             {
                 forAll(root, k)
                 {
                     labelPair& mine = componentLabel[root[k]];
                     if
                     (
-                        theirLabels[i] < mine
-                     && periodic_.overlapsImage(groupedBoxes[k], theirBoxes[i])
+                        theirLabels[j][i] < mine
+                     && periodic_.overlapsImage
+                        (
+                            groupedBoxes[k],
+                            theirBoxes[j][i]
+                        )
                     )
                     {
-                        mine = theirLabels[i];
+                        mine = theirLabels[j][i];
                         falling = true;
                     }
                 }

@@ -243,26 +243,28 @@ Foam::labelList Foam::polymer::processorNeighbours::pointOwners
     List<List<char>> recv;
     exchange(questions, recv);
 
+    // The answers: a flag for each point asked, sizes known both ways
     const cellLocator& locator = cellLocator::New(mesh_);
-    PtrList<OListStream> answers(streams());
+    List<List<char>> held(neighbours_.size());
     forAll(recv, k)
     {
         if (recv[k].size())
         {
             UIListStream is(recv[k], IOstream::BINARY);
             const List<point> theirs(is);
-            DynamicList<label> held;
+            held[k].setSize(theirs.size());
             forAll(theirs, i)
             {
-                if (locator.findCell(theirs[i]) >= 0)
-                {
-                    held.append(i);
-                }
+                held[k][i] = (locator.findCell(theirs[i]) >= 0);
             }
-            answers[k] << held;
         }
     }
-    exchange(answers, recv);
+    List<List<char>> answers(neighbours_.size());
+    forAll(answers, k)
+    {
+        answers[k].setSize(asked[k].size());
+    }
+    exchangeKnownSizes(held, answers);
 
     // The lowest holder, this processor included
     labelList owner(points.size(), labelMax);
@@ -273,13 +275,11 @@ Foam::labelList Foam::polymer::processorNeighbours::pointOwners
             owner[i] = Pstream::myProcNo();
         }
     }
-    forAll(recv, k)
+    forAll(answers, k)
     {
-        if (recv[k].size())
+        forAll(answers[k], j)
         {
-            UIListStream is(recv[k], IOstream::BINARY);
-            const labelList held(is);
-            for (const label j : held)
+            if (answers[k][j])
             {
                 label& proci = owner[asked[k][j]];
                 proci = min(proci, neighbours_[k]);
