@@ -11,30 +11,14 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "beadSampler.H"
-#include "PstreamBuffers.H"
+#include "UIListStream.H"
+#include "allReduce.H"
 #include "clockTime.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
 {
-
-// The indices of the requests going to each processor
-Foam::List<Foam::DynamicList<Foam::label>> byProcessor
-(
-    const Foam::labelUList& proc
-)
-{
-    using namespace Foam;
-    using namespace Foam::polymer;
-
-    List<DynamicList<label>> requests(Pstream::nProcs());
-    forAll(proc, j)
-    {
-        requests[proc[j]].append(j);
-    }
-    return requests;
-}
 
 // Tets as three label lists (cells, faces, tet points)
 void writeTets(Foam::Ostream& os, const Foam::UList<Foam::tetIndices>& tets)
@@ -91,13 +75,28 @@ Foam::polymer::beadSampler::beadSampler(const fvMesh& mesh)
     answeredTets_(Pstream::nProcs()),
     answeredCoordinates_(Pstream::nProcs()),
     locatedBeads_(Pstream::nProcs()),
-    processorBounds_(),
+    neighbours_(mesh),
     nOutside_(0),
     exchangeSeconds_(0)
 {}
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::List<Foam::DynamicList<Foam::label>>
+Foam::polymer::beadSampler::byNeighbour(const labelUList& proc) const
+{
+    const labelList& neighbours = neighbours_.neighbours();
+    List<DynamicList<label>> requests(neighbours.size());
+    forAll(proc, j)
+    {
+        // The neighbours are in increasing order
+        const label k = findSortedIndex(neighbours, proc[j]);
+        requests[k].append(j);
+    }
+    return requests;
+}
+
 
 Foam::List<Foam::tetIndices> Foam::polymer::beadSampler::askTets
 (
@@ -107,69 +106,73 @@ Foam::List<Foam::tetIndices> Foam::polymer::beadSampler::askTets
     const UList<tetIndices>& startTets
 )
 {
-    const List<DynamicList<label>> asked(byProcessor(proc));
+    typedef FixedList<label, 3> tetLabels;
+    const labelList& neighbours = neighbours_.neighbours();
+    const List<DynamicList<label>> asked(byNeighbour(proc));
 
-    PstreamBuffers requests(Pstream::commsTypes::nonBlocking);
-    forAll(asked, proci)
+    PtrList<OListStream> requests(neighbours_.streams());
+    forAll(asked, k)
     {
-        if (asked[proci].size())
+        if (asked[k].size())
         {
-            UOPstream os(proci, requests);
-            os  << UIndirectList<point>(points, asked[proci]);
+            requests[k] << pointField(UIndirectList<point>(points, asked[k]));
             writeTets
             (
-                os,
-                UIndirectList<tetIndices>(startTets, asked[proci])()
+                requests[k],
+                UIndirectList<tetIndices>(startTets, asked[k])()
             );
         }
     }
-    labelList recvSizes;
-    requests.finishedSends(recvSizes);
+    List<List<char>> recv;
+    neighbours_.exchange(requests, recv);
 
     // Answer the others' requests, keeping the tets found for sample
     const boundBox& bounds = bounds_;
-    PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
-    forAll(recvSizes, proci)
+    List<List<tetLabels>> answers(neighbours.size());
+    forAll(recv, k)
     {
-        if (recvSizes[proci])
+        if (recv[k].size())
         {
-            UIPstream is(proci, requests);
+            const label proci = neighbours[k];
+            UIListStream is(recv[k], IOstream::BINARY);
             const pointField p(is);
             List<tetIndices> tets(readTets(is));
-            forAll(p, k)
+            answers[k].setSize(p.size());
+            forAll(p, m)
             {
                 barycentric coordinates;
-                tets[k] =
-                    bounds.contains(p[k])
-                  ? locator_.findTet(p[k], tets[k], coordinates)
+                tets[m] =
+                    bounds.contains(p[m])
+                  ? locator_.findTet(p[m], tets[m], coordinates)
                   : tetIndices();
-                if (tets[k].cell() >= 0)
+                if (tets[m].cell() >= 0)
                 {
-                    answeredTets_[proci].append(tets[k]);
+                    answeredTets_[proci].append(tets[m]);
                     answeredCoordinates_[proci].append(coordinates);
                 }
+                answers[k][m] =
+                    tetLabels({tets[m].cell(), tets[m].face(), tets[m].tetPt()});
             }
-            UOPstream os(proci, answers);
-            writeTets(os, tets);
         }
     }
-    answers.finishedSends(recvSizes);
+    List<List<tetLabels>> answered(neighbours.size());
+    forAll(answered, k)
+    {
+        answered[k].setSize(asked[k].size());
+    }
+    neighbours_.exchangeKnownSizes(answers, answered);
 
     List<tetIndices> found(points.size());
-    forAll(recvSizes, proci)
+    forAll(answered, k)
     {
-        if (recvSizes[proci])
+        forAll(answered[k], m)
         {
-            UIPstream is(proci, answers);
-            const List<tetIndices> tets(readTets(is));
-            forAll(tets, k)
+            const label j = asked[k][m];
+            const tetLabels& t = answered[k][m];
+            found[j] = tetIndices(t[0], t[1], t[2]);
+            if (t[0] >= 0)
             {
-                const label j = asked[proci][k];
-                found[j] = tets[k];
-                if (tets[k].cell() >= 0)
-                {
-                    locatedBeads_[proci].append(beads[j]);
-                }
+                locatedBeads_[neighbours[k]].append(beads[j]);
             }
         }
     }
@@ -183,19 +186,20 @@ void Foam::polymer::beadSampler::locateRemote
     List<tetIndices>& tet
 )
 {
-    if (processorBounds_.empty())
-    {
-        processorBounds_.setSize(Pstream::nProcs());
-        processorBounds_[Pstream::myProcNo()] = bounds_;
-        Pstream::gatherList(processorBounds_);
-        Pstream::scatterList(processorBounds_);
-    }
-
     // Each unheld bead is asked of every other processor whose mesh's
-    // bounding box holds it (no other mesh can), in one exchange: from the
-    // tet that held it when that processor did, by a tree search
-    // otherwise. The lowest processor that finds it holds it.
-    const label myProc = Pstream::myProcNo();
+    // bounding box holds it (no other mesh can; they are neighbours for
+    // the unheld beads' reach), in one exchange: from the tet that held it
+    // when that processor did, by a tree search otherwise. The lowest
+    // processor that finds it holds it.
+    scalar reach = 0;
+    for (const point& p : unheldPoints_)
+    {
+        reach = max(reach, neighbours_.excess(p));
+    }
+    const labelList& neighbours =
+        neighbours_.neighbours(allReduceMax(reach));
+    const List<boundBox>& procBounds = neighbours_.processorBounds();
+
     DynamicList<label> askedBead(unheld_.size());
     DynamicList<point> askedPoint(unheld_.size());
     DynamicList<label> askedProc(unheld_.size());
@@ -204,9 +208,9 @@ void Foam::polymer::beadSampler::locateRemote
     {
         const label i = unheld_[k];
         const point& p = unheldPoints_[k];
-        forAll(processorBounds_, proci)
+        for (const label proci : neighbours)
         {
-            if (proci != myProc && processorBounds_[proci].contains(p))
+            if (procBounds[proci].contains(p))
             {
                 askedBead.append(i);
                 askedPoint.append(p);
@@ -317,50 +321,38 @@ void Foam::polymer::beadSampler::sample
 
     // The values at the beads located for other processors, to them; the
     // values at this one's unheld beads, from the processors holding them
+    // (both sides know how many)
     clockTime clock;
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    forAll(answeredTets_, proci)
+    const labelList& neighbours = neighbours_.neighbours();
+    List<List<vector>> send(neighbours.size());
+    List<List<vector>> recv(neighbours.size());
+    forAll(neighbours, k)
     {
+        const label proci = neighbours[k];
         const DynamicList<tetIndices>& tets = answeredTets_[proci];
-        if (tets.size())
+        const DynamicList<barycentric>& coordinates =
+            answeredCoordinates_[proci];
+        send[k].setSize(tets.size());
+        forAll(tets, m)
         {
-            const DynamicList<barycentric>& coordinates =
-                answeredCoordinates_[proci];
-            vectorField v(tets.size());
-            forAll(tets, k)
-            {
-                v[k] = field.interpolate(coordinates[k], tets[k]);
-            }
-            UOPstream os(proci, buffers);
-            os  << v;
+            send[k][m] = field.interpolate(coordinates[m], tets[m]);
         }
+        recv[k].setSize(locatedBeads_[proci].size());
     }
-    labelList recvSizes;
-    buffers.finishedSends(recvSizes);
+    neighbours_.exchangeKnownSizes(send, recv);
 
-    forAll(recvSizes, proci)
+    // A bead on the face between two processors' meshes is found by both:
+    // the value of the one holding it
+    const labelList& owner = remoteOwners_.values();
+    forAll(neighbours, k)
     {
-        if (recvSizes[proci])
+        const label proci = neighbours[k];
+        const DynamicList<label>& beads = locatedBeads_[proci];
+        forAll(beads, m)
         {
-            UIPstream is(proci, buffers);
-            const vectorField v(is);
-            const DynamicList<label>& beads = locatedBeads_[proci];
-            if (v.size() != beads.size())
+            if (owner[beads[m]] == proci)
             {
-                FatalErrorInFunction
-                    << "Processor " << proci << " sent " << v.size()
-                    << " values for the " << beads.size()
-                    << " beads it located" << abort(FatalError);
-            }
-            // A bead on the face between two processors' meshes is found
-            // by both: the value of the one holding it
-            const labelList& owner = remoteOwners_.values();
-            forAll(beads, m)
-            {
-                if (owner[beads[m]] == proci)
-                {
-                    values[beads[m]] = v[m];
-                }
+                values[beads[m]] = recv[k][m];
             }
         }
     }

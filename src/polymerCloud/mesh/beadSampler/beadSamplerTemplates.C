@@ -11,7 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "beadSampler.H"
-#include "PstreamBuffers.H"
+#include "UIListStream.H"
 #include "clockTime.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -52,28 +52,29 @@ void Foam::polymer::beadSampler::addToCells
         }
     }
 
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    forAll(cells, proci)
+    const labelList& neighbours = neighbours_.neighbours();
+    PtrList<OListStream> send(neighbours_.streams());
+    forAll(neighbours, k)
     {
+        const label proci = neighbours[k];
         if (cells[proci].size())
         {
-            UOPstream os(proci, buffers);
-            os  << cells[proci] << sent[proci];
+            send[k] << cells[proci] << sent[proci];
         }
     }
-    labelList recvSizes;
-    buffers.finishedSends(recvSizes);
+    List<List<char>> recv;
+    neighbours_.exchange(send, recv);
 
-    forAll(recvSizes, proci)
+    forAll(recv, k)
     {
-        if (recvSizes[proci])
+        if (recv[k].size())
         {
-            UIPstream is(proci, buffers);
+            UIListStream is(recv[k], IOstream::BINARY);
             const labelList c(is);
             const List<Type> v(is);
-            forAll(c, k)
+            forAll(c, m)
             {
-                cellValues[c[k]] += v[k];
+                cellValues[c[m]] += v[m];
             }
         }
     }
