@@ -215,7 +215,11 @@ void Foam::polymer::chainDistribution::distribute()
         }
     }
 
-    move(toProc, sent, UList<DynamicList<vector>*>(), neighbours_);
+    // (the owners are this processor's neighbours)
+    moveAmongNeighbours
+    (
+        toProc, sent, UList<DynamicList<vector>*>(), neighbours_
+    );
     nMoved_ += sent.size();
     seconds_ += clock.elapsedTime();
 }
@@ -250,9 +254,23 @@ void Foam::polymer::chainDistribution::move
     if (allReduceOr(general))
     {
         moveAnywhere(toProc, sent, beadFields);
-        return;
     }
+    else
+    {
+        moveAmongNeighbours(toProc, sent, beadFields, neighbourExchange);
+    }
+}
 
+
+void Foam::polymer::chainDistribution::moveAmongNeighbours
+(
+    const List<DynamicList<label>>& toProc,
+    const labelUList& sent,
+    const UList<DynamicList<vector>*>& beadFields,
+    const processorNeighbours& neighbourExchange
+)
+{
+    const labelList& neighbours = neighbourExchange.neighbours();
     PtrList<OListStream> send(neighbourExchange.streams());
     forAll(neighbours, k)
     {

@@ -67,45 +67,6 @@ void lowestClaims(Foam::labelList& claim)
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
-Foam::labelList Foam::polymer::pointOwners
-(
-    const polyMesh& mesh,
-    const UList<point>& points
-)
-{
-    if (!Pstream::parRun())
-    {
-        return replicatedPointOwners(mesh, points);
-    }
-
-    // Every processor's points, one list
-    const label nProcs = Pstream::nProcs();
-    List<pointField> all(nProcs);
-    all[Pstream::myProcNo()] = points;
-    Pstream::gatherList(all);
-    Pstream::scatterList(all);
-
-    labelList offset(nProcs + 1, Zero);
-    forAll(all, proci)
-    {
-        offset[proci + 1] = offset[proci] + all[proci].size();
-    }
-    pointField allPoints(offset[nProcs]);
-    forAll(all, proci)
-    {
-        SubList<point>(allPoints, all[proci].size(), offset[proci]) =
-            all[proci];
-    }
-
-    labelList claim(claims(mesh, allPoints));
-    lowestClaims(claim);
-    return labelList
-    (
-        SubList<label>(claim, points.size(), offset[Pstream::myProcNo()])
-    );
-}
-
-
 Foam::labelList Foam::polymer::replicatedPointOwners
 (
     const polyMesh& mesh,
