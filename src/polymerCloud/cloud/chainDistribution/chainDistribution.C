@@ -272,9 +272,11 @@ void Foam::polymer::chainDistribution::moveAmongNeighbours
 {
     const labelList& neighbours = neighbourExchange.neighbours();
     PtrList<OListStream> send(neighbourExchange.streams());
+    label nSent = 0;
     forAll(neighbours, k)
     {
         const labelList& chainIndices = toProc[neighbours[k]];
+        nSent += chainIndices.size();
         if (chainIndices.size())
         {
             sendChains(send[k], chains_, chainIndices);
@@ -283,6 +285,13 @@ void Foam::polymer::chainDistribution::moveAmongNeighbours
                 send[k] << chainBeads(chains_, chainIndices, *field);
             }
         }
+    }
+    if (nSent != sent.size())
+    {
+        FatalErrorInFunction
+            << sent.size() - nSent << " chains are for processors that are"
+            << " not this one's neighbours " << neighbours
+            << abort(FatalError);
     }
     List<List<char>> recv;
     neighbourExchange.exchange(send, recv);

@@ -116,9 +116,15 @@ Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
          || !myBounds.contains(boxes[c].max());
         for (const label proci : neighbours)
         {
-            reaches =
+            if
+            (
                 reaches
-             || periodic_.overlapsImage(boxes[c], procBounds[proci]);
+             || periodic_.overlapsImage(boxes[c], procBounds[proci])
+            )
+            {
+                reaches = true;
+                break;
+            }
         }
         if (reaches)
         {

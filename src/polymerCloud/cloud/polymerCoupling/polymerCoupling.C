@@ -14,7 +14,7 @@ License
 #include "field.H"
 #include "checkedInput.H"
 #include "fvmSup.H"
-#include "PstreamBuffers.H"
+#include "UIListStream.H"
 #include "clockTime.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -88,39 +88,56 @@ Foam::polymer::polymerCoupling::checkSettings(const dictionary& coeffs) const
 
 void Foam::polymer::polymerCoupling::depositRemote
 (
+    const processorNeighbours& neighbours,
     const List<DynamicList<label>>& cells,
     const List<DynamicList<vector>>& transfer,
     const List<DynamicList<scalar>>& coeff
 )
 {
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    forAll(cells, proci)
+    // The beads' holders are the sampler's neighbours, which located them
+    const labelList& procs = neighbours.neighbours();
+    PtrList<OListStream> send(neighbours.streams());
+    label nSent = 0;
+    forAll(procs, k)
     {
+        const label proci = procs[k];
         if (cells[proci].size())
         {
-            UOPstream os(proci, buffers);
-            os  << cells[proci] << transfer[proci] << coeff[proci];
+            send[k] << cells[proci] << transfer[proci] << coeff[proci];
+            nSent += cells[proci].size();
         }
     }
-    labelList recvSizes;
-    buffers.finishedSends(recvSizes);
+    label nToSend = 0;
+    for (const DynamicList<label>& c : cells)
+    {
+        nToSend += c.size();
+    }
+    if (nSent != nToSend)
+    {
+        FatalErrorInFunction
+            << nToSend - nSent << " beads' momentum is for processors that"
+            << " are not the sampler's neighbours " << procs
+            << abort(FatalError);
+    }
+    List<List<char>> recv;
+    neighbours.exchange(send, recv);
 
     const volVectorField& U =
         mesh_.lookupObject<volVectorField>(solvedFlow().UName());
-    forAll(recvSizes, proci)
+    forAll(recv, k)
     {
-        if (!recvSizes[proci])
+        if (recv[k].empty())
         {
             continue;
         }
-        UIPstream is(proci, buffers);
+        UIListStream is(recv[k], IOstream::BINARY);
         const labelList cell(is);
         const List<vector> t(is);
         const List<scalar> c(is);
-        forAll(cell, k)
+        forAll(cell, m)
         {
-            momentumTransfer_[cell[k]] += (t[k] + c[k]*U[cell[k]])/rho_;
-            momentumCoeff_[cell[k]] += c[k]/rho_;
+            momentumTransfer_[cell[m]] += (t[m] + c[m]*U[cell[m]])/rho_;
+            momentumCoeff_[cell[m]] += c[m]/rho_;
         }
     }
 }
@@ -285,7 +302,10 @@ void Foam::polymer::polymerCoupling::deposit
     if (Pstream::parRun())
     {
         clockTime clock;
-        depositRemote(remoteCell, remoteTransfer, remoteCoeff);
+        depositRemote
+        (
+            sampler.neighbours(), remoteCell, remoteTransfer, remoteCoeff
+        );
         exchangeSeconds_ += clock.elapsedTime();
     }
 }
