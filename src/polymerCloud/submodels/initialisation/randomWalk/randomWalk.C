@@ -121,26 +121,49 @@ Foam::labelList Foam::polymer::initialisationModels::randomWalk::judgedHere
     const UList<List<point>>& x,
     const labelUList& drawing,
     const periodicImages& periodic,
-    const processorNeighbours& neighbours
+    const processorNeighbours& neighbours,
+    DynamicList<label>& outside
 )
 {
+    // A reference bead outside every processor's bounds is outside every
+    // mesh: the master says so without asking (the whole mesh's box
+    // first, then each processor's)
     const boundBox& bounds = neighbours.localBounds();
+    boundBox meshBounds(boundBox::invertedBox);
+    for (const boundBox& bb : neighbours.processorBounds())
+    {
+        if (bb.valid())
+        {
+            meshBounds.add(bb);
+        }
+    }
     DynamicList<label> judged;
     for (const label n : drawing)
     {
         const point p = periodic.wrap(x[n][x[n].size()/2]);
-        bool judge = bounds.contains(p);
-        if (!judge && Pstream::master())
-        {
-            judge = true;
-            for (const boundBox& bb : neighbours.processorBounds())
-            {
-                judge = judge && !bb.contains(p);
-            }
-        }
-        if (judge)
+        if (bounds.contains(p))
         {
             judged.append(n);
+        }
+        else if (Pstream::master())
+        {
+            bool held = meshBounds.contains(p);
+            if (held)
+            {
+                held = false;
+                for (const boundBox& bb : neighbours.processorBounds())
+                {
+                    if (bb.contains(p))
+                    {
+                        held = true;
+                        break;
+                    }
+                }
+            }
+            if (!held)
+            {
+                outside.append(n);
+            }
         }
     }
     return labelList(judged);
@@ -172,10 +195,11 @@ Foam::polymer::initialisationModels::randomWalk::walksInside
     labelList drawing(identity(nChains));
     for (label attempt = 1; drawing.size(); ++attempt)
     {
+        DynamicList<label> outside;
         const labelList judged
         (
             neighbours.valid()
-          ? judgedHere(x, drawing, periodic, neighbours())
+          ? judgedHere(x, drawing, periodic, neighbours(), outside)
           : drawing
         );
         pointField images(judged.size()*type.nBeads());
@@ -194,7 +218,6 @@ Foam::polymer::initialisationModels::randomWalk::walksInside
           : replicatedPointOwners(mesh, images)
         );
 
-        DynamicList<label> outside;
         forAll(judged, j)
         {
             const SubList<label> beadOwners
