@@ -12,6 +12,7 @@ License
 
 #include "collisionGroups.H"
 #include "allReduce.H"
+#include "bitSet.H"
 #include "UIListStream.H"
 #include "clockTime.H"
 
@@ -41,18 +42,6 @@ Foam::boundBox sweptBox
     }
     const vector grow(vector::uniform(margin + SMALL*mag(bb.span())));
     return boundBox(bb.min() - grow, bb.max() + grow);
-}
-
-
-// Union-find root, halving the path
-Foam::label findRoot(Foam::labelList& parent, Foam::label i)
-{
-    while (parent[i] != i)
-    {
-        parent[i] = parent[parent[i]];
-        i = parent[i];
-    }
-    return i;
 }
 
 } // End anonymous namespace
@@ -92,7 +81,7 @@ Foam::polymer::collisionGroups::exchangeBoxes
 }
 
 
-Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
+Foam::labelList Foam::polymer::collisionGroups::chainsMeetingOthers
 (
     const List<boundBox>& boxes,
     bool& anyMeeting
@@ -107,7 +96,7 @@ Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
     // and q meet at a point x: outside q's bounds, q's chain reaches
     // beyond them; inside, p's chain reaches into them
     const boundBox& myBounds = procBounds[Pstream::myProcNo()];
-    boolList meets(boxes.size(), false);
+    bitSet meets(boxes.size());
     DynamicList<label> exposed;
     forAll(boxes, c)
     {
@@ -128,7 +117,7 @@ Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
         }
         if (reaches)
         {
-            meets[c] = true;
+            meets.set(c);
             exposed.append(c);
         }
     }
@@ -146,7 +135,7 @@ Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
             {
                 if (periodic_.overlapsImage(boxes[c], other))
                 {
-                    meets[c] = true;
+                    meets.set(c);
                     anyMeeting = true;
                     break;
                 }
@@ -156,64 +145,67 @@ Foam::boolList Foam::polymer::collisionGroups::chainsMeetingOthers
     anyMeeting = allReduceOr(anyMeeting);
     if (!anyMeeting)
     {
-        return meets;
+        return labelList();
     }
 
-    // The closure: chains that can meet those
+    // The closure, chains that can meet those, by components: each
+    // meeting chain not reached yet starts one, and every chain joined to
+    // it by overlapping boxes is in it
+    labelList component(boxes.size(), -1);
+    label nComponents = 0;
     DynamicList<label> front;
-    forAll(meets, c)
+    forAll(boxes, s)
     {
-        if (meets[c])
+        if (!meets.test(s) || component[s] >= 0)
         {
-            front.append(c);
+            continue;
         }
-    }
-    while (front.size())
-    {
-        const label c = front.remove();
-        forAll(boxes, d)
+        component[s] = nComponents;
+        front.append(s);
+        while (front.size())
         {
-            if (!meets[d] && periodic_.overlapsImage(boxes[c], boxes[d]))
+            const label c = front.remove();
+            forAll(boxes, d)
             {
-                meets[d] = true;
-                front.append(d);
+                if
+                (
+                    component[d] < 0
+                 && periodic_.overlapsImage(boxes[c], boxes[d])
+                )
+                {
+                    component[d] = nComponents;
+                    front.append(d);
+                }
             }
         }
+        ++nComponents;
     }
 
-    return meets;
+    return component;
 }
 
 
 Foam::labelList Foam::polymer::collisionGroups::groupProcessors
 (
     const List<boundBox>& boxes,
-    const labelUList& grouped
+    const labelUList& grouped,
+    const labelUList& component
 ) const
 {
-    // This processor's grouped chains joined by overlapping boxes, each
-    // component labelled by its lowest (processor, chain) pair
+    // Each of this processor's components labelled by its lowest
+    // (processor, grouped chain) pair
     const label myProc = Pstream::myProcNo();
     const label n = grouped.size();
-    labelList parent(identity(n));
-    for (label a = 0; a < n; ++a)
-    {
-        for (label b = a + 1; b < n; ++b)
-        {
-            if
-            (
-                periodic_.overlapsImage(boxes[grouped[a]], boxes[grouped[b]])
-            )
-            {
-                parent[findRoot(parent, a)] = findRoot(parent, b);
-            }
-        }
-    }
     labelList root(n);
-    List<labelPair> componentLabel(n, labelPair(labelMax, labelMax));
+    label nComponents = 0;
     forAll(root, k)
     {
-        root[k] = findRoot(parent, k);
+        root[k] = component[grouped[k]];
+        nComponents = max(nComponents, root[k] + 1);
+    }
+    List<labelPair> componentLabel(nComponents, labelPair(labelMax, labelMax));
+    forAll(root, k)
+    {
         const labelPair own(myProc, k);
         if (own < componentLabel[root[k]])
         {
@@ -342,7 +334,7 @@ void Foam::polymer::collisionGroups::group
     // of their reaches)
     neighbours_.neighbours(2*allReduceMax(reach));
     bool anyMeeting = false;
-    const boolList meets(chainsMeetingOthers(boxes, anyMeeting));
+    const labelList component(chainsMeetingOthers(boxes, anyMeeting));
     if (!anyMeeting)
     {
         // No chains of two processors can meet this step
@@ -353,14 +345,14 @@ void Foam::polymer::collisionGroups::group
 
     // The groups, formed among the neighbours
     DynamicList<label> grouped;
-    forAll(meets, c)
+    forAll(component, c)
     {
-        if (meets[c])
+        if (component[c] >= 0)
         {
             grouped.append(c);
         }
     }
-    const labelList destination(groupProcessors(boxes, grouped));
+    const labelList destination(groupProcessors(boxes, grouped, component));
 
     // Each grouped chain, with its step's start, to its group's processor
     List<DynamicList<label>> toProc(Pstream::nProcs());

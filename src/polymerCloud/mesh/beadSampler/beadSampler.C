@@ -65,7 +65,6 @@ Foam::polymer::beadSampler::beadSampler(const fvMesh& mesh)
     mesh_(mesh),
     locator_(cellLocator::New(mesh)),
     periodic_(periodicImages::New(mesh)),
-    bounds_(mesh.points(), false),
     remoteOwners_(-1),
     remoteTets_(tetIndices()),
     unheld_(),
@@ -127,7 +126,7 @@ Foam::List<Foam::tetIndices> Foam::polymer::beadSampler::askTets
     neighbours_.exchange(requests, recv);
 
     // Answer the others' requests, keeping the tets found for sample
-    const boundBox& bounds = bounds_;
+    const boundBox& bounds = neighbours_.localBounds();
     List<List<tetLabels>> answers(neighbours.size());
     forAll(recv, k)
     {
@@ -264,7 +263,7 @@ void Foam::polymer::beadSampler::locate(const polymerChains& chains)
     // A bead outside this processor's bounding box is in another's mesh,
     // or in none: no search here. The search starts from the tet that
     // held the bead at the last locate
-    const boundBox& bounds = bounds_;
+    const boundBox& bounds = neighbours_.localBounds();
     forAll(x, i)
     {
         const point p = periodic_.wrap(x[i]);
