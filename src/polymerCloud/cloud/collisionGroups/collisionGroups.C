@@ -185,6 +185,43 @@ Foam::labelList Foam::polymer::collisionGroups::chainsMeetingOthers
 }
 
 
+Foam::List<Foam::labelPairList>
+Foam::polymer::collisionGroups::overlappingChains
+(
+    const List<boundBox>& mine,
+    const List<List<boundBox>>& theirs
+) const
+{
+    // Both processors of a pair test the same boxes in the same order
+    // (the lower processor's first), so that each sees the overlaps the
+    // other sees, to the last bit
+    const labelList& neighbours = neighbours_.neighbours();
+    List<labelPairList> overlaps(theirs.size());
+    forAll(theirs, j)
+    {
+        const bool mineFirst = Pstream::myProcNo() < neighbours[j];
+        DynamicList<labelPair> pairs;
+        forAll(theirs[j], i)
+        {
+            forAll(mine, k)
+            {
+                if
+                (
+                    mineFirst
+                  ? periodic_.overlapsImage(mine[k], theirs[j][i])
+                  : periodic_.overlapsImage(theirs[j][i], mine[k])
+                )
+                {
+                    pairs.append(labelPair(k, i));
+                }
+            }
+        }
+        overlaps[j].transfer(pairs);
+    }
+    return overlaps;
+}
+
+
 Foam::labelList Foam::polymer::collisionGroups::groupProcessors
 (
     const List<boundBox>& boxes,
@@ -213,73 +250,82 @@ Foam::labelList Foam::polymer::collisionGroups::groupProcessors
         }
     }
 
-    // The lowest label of every component spanning several processors
-    // spreads along the overlaps between neighbours' grouped chains,
-    // until no label falls anywhere: the component then goes whole to
-    // its lowest processor, as one processor forming every group would
-    // send it. The first round sends the boxes with the labels, later
-    // rounds the labels alone, whose number each neighbour then knows
+    // The grouped chains' boxes and labels to the neighbours, theirs back
     const List<boundBox> groupedBoxes(UIndirectList<boundBox>(boxes, grouped));
+    List<labelPair> sent(UIndirectList<labelPair>(componentLabel, root));
     List<List<boundBox>> theirBoxes(neighbours_.neighbours().size());
     List<List<labelPair>> theirLabels(theirBoxes.size());
-    for (bool first = true, falling = true; falling; first = false)
     {
-        const List<labelPair> labels
-        (
-            UIndirectList<labelPair>(componentLabel, root)
-        );
-        if (first)
+        PtrList<OListStream> send(neighbours_.streams());
+        if (n)
         {
-            PtrList<OListStream> send(neighbours_.streams());
-            if (n)
+            for (OListStream& os : send)
             {
-                for (OListStream& os : send)
-                {
-                    os  << groupedBoxes << labels;
-                }
-            }
-            List<List<char>> recv;
-            neighbours_.exchange(send, recv);
-            forAll(recv, j)
-            {
-                if (recv[j].size())
-                {
-                    UIListStream is(recv[j], IOstream::BINARY);
-                    is  >> theirBoxes[j] >> theirLabels[j];
-                }
+                os  << groupedBoxes << sent;
             }
         }
-        else
+        List<List<char>> recv;
+        neighbours_.exchange(send, recv);
+        forAll(recv, j)
         {
-            const List<List<labelPair>> send(theirBoxes.size(), labels);
-            neighbours_.exchangeKnownSizes(send, theirLabels);
+            if (recv[j].size())
+            {
+                UIListStream is(recv[j], IOstream::BINARY);
+                is  >> theirBoxes[j] >> theirLabels[j];
+            }
         }
+    }
+    const List<labelPairList> overlaps
+    (
+        overlappingChains(groupedBoxes, theirBoxes)
+    );
 
-        falling = false;
-        forAll(theirBoxes, j)
+    // The lowest label of every component spanning several processors
+    // spreads along the overlaps, a neighbour a round: the component then
+    // goes whole to its lowest processor, as one processor forming every
+    // group would send it. A label falls in a round only where one fell
+    // in the round before, in a component overlapping a higher label of
+    // the neighbour's: with none such anywhere the labels are final.
+    // Asking costs a collective, so it is asked every second round: a
+    // group over two or three sub-domains is then labelled in one
+    for (label round = 1; ; ++round)
+    {
+        bool pending = false;
+        forAll(overlaps, j)
         {
-            forAll(theirBoxes[j], i)
+            for (const labelPair& ki : overlaps[j])
             {
-                forAll(root, k)
+                labelPair& mine = componentLabel[root[ki.first()]];
+                const labelPair& theirs = theirLabels[j][ki.second()];
+                if (theirs < mine)
                 {
-                    labelPair& mine = componentLabel[root[k]];
-                    if
-                    (
-                        theirLabels[j][i] < mine
-                     && periodic_.overlapsImage
-                        (
-                            groupedBoxes[k],
-                            theirBoxes[j][i]
-                        )
-                    )
-                    {
-                        mine = theirLabels[j][i];
-                        falling = true;
-                    }
+                    mine = theirs;
                 }
             }
         }
-        falling = allReduceOr(falling);
+        forAll(overlaps, j)
+        {
+            for (const labelPair& ki : overlaps[j])
+            {
+                const labelPair& mine = componentLabel[root[ki.first()]];
+                pending =
+                    pending
+                 || (
+                        mine < sent[ki.first()]
+                     && mine < theirLabels[j][ki.second()]
+                    );
+            }
+        }
+        if (round % 2 == 0 && !allReduceOr(pending))
+        {
+            break;
+        }
+        sent = UIndirectList<labelPair>(componentLabel, root);
+        neighbours_.exchangeKnownSizes
+        (
+            List<List<labelPair>>(theirLabels.size(), sent),
+            theirLabels
+        );
     }
 
     labelList destination(n);

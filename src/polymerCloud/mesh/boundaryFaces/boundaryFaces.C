@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "boundaryFaces.H"
+#include "processorBounds.H"
 #include "emptyPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
 #include "periodicImages.H"
@@ -140,16 +141,17 @@ Foam::polymer::boundaryFaces::addHalo(const polyMesh& mesh, const scalar reach)
         return;
     }
 
-    // Every processor's mesh bounds grown by the reach
-    List<boundBox> reachBox(Pstream::nProcs());
-    const boundBox& bounds = mesh.bounds();
-    reachBox[Pstream::myProcNo()] = boundBox
-    (
-        bounds.min() - vector::uniform(reach),
-        bounds.max() + vector::uniform(reach)
-    );
-    Pstream::gatherList(reachBox);
-    Pstream::scatterList(reachBox);
+    // Every processor's own mesh bounds grown by the reach (a processor
+    // without cells has an inverted box, and needs no faces)
+    List<boundBox> reachBox(processorBounds::New(mesh).bounds());
+    for (boundBox& bb : reachBox)
+    {
+        if (bb.valid())
+        {
+            bb.min() -= vector::uniform(reach);
+            bb.max() += vector::uniform(reach);
+        }
+    }
 
     const periodicImages& periodic = periodicImages::New(mesh);
 
