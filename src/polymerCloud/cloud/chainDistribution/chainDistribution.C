@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "chainDistribution.H"
+#include "packedReduction.H"
 #include "allReduce.H"
 #include "PstreamBuffers.H"
 #include "pointField.H"
@@ -563,12 +564,16 @@ void Foam::polymer::chainDistribution::update()
 
 void Foam::polymer::chainDistribution::writeRunTotals(dictionary& dict) const
 {
+    label moved = nMoved_;
+    label wrapped = nWrapped_;
+    packedReduction all;
+    all.sum(moved);
+    all.sum(wrapped);
+    all.reduce();
+
     dictionary& totals = dict.subDictOrAdd("chains");
-    runTotals::add(totals, "moved", returnReduce(nMoved_, sumOp<label>()));
-    runTotals::add
-    (
-        totals, "wrapped", returnReduce(nWrapped_, sumOp<label>())
-    );
+    runTotals::add(totals, "moved", moved);
+    runTotals::add(totals, "wrapped", wrapped);
 }
 
 

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "chainStepper.H"
+#include "packedReduction.H"
 #include "allReduce.H"
 #include "Time.H"
 #include "isFinite.H"
@@ -507,26 +508,25 @@ void Foam::polymer::chainStepper::restoreStart()
 
 void Foam::polymer::chainStepper::writeRunTotals(dictionary& dict) const
 {
+    label largestSubCycles = largestSubCycles_;
+    label maxBeadsOutside = maxBeadsOutside_;
+    scalar beadStepsOutside = beadStepsOutside_;
+    {
+        packedReduction all;
+        all.max(largestSubCycles);
+        all.max(maxBeadsOutside);
+        all.sum(beadStepsOutside);
+        all.reduce();
+    }
+
     dictionary& totals = dict.subDictOrAdd("steps");
     runTotals::add(totals, "flowSteps", flowSteps_);
     runTotals::add(totals, "subCycledSteps", subCycledSteps_);
     runTotals::add(totals, "subCycleSteps", subCycleSteps_);
-    runTotals::add
-    (
-        totals, "largestSubCycles",
-        returnReduce(largestSubCycles_, maxOp<label>())
-    );
+    runTotals::add(totals, "largestSubCycles", largestSubCycles);
     runTotals::add(totals, "cappedSteps", cappedSteps_);
-    runTotals::add
-    (
-        totals, "maxBeadsOutside",
-        returnReduce(maxBeadsOutside_, maxOp<label>())
-    );
-    runTotals::add
-    (
-        totals, "beadStepsOutside",
-        returnReduce(beadStepsOutside_, sumOp<scalar>())
-    );
+    runTotals::add(totals, "maxBeadsOutside", maxBeadsOutside);
+    runTotals::add(totals, "beadStepsOutside", beadStepsOutside);
 }
 
 

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "contactProjection.H"
+#include "packedReduction.H"
 #include "rodCrossingAudit.H"
 #include "rodPairCrossing.H"
 #include "cpuTime.H"
@@ -37,20 +38,7 @@ Foam::polymer::contactProjection::contactProjection
       : autoPtr<crossingRootSolver>()
     ),
     rods_(),
-    zones_(),
-    reprojected_(0),
-    notConverged_(0),
-    zoneChainSteps_(0),
-    stoppedChainSteps_(0),
-    heldChainSteps_(0),
-    wrappedChainSteps_(0),
-    leftOff_(0),
-    zonesFormed_(0),
-    energyRemoved_(0),
-    seconds_(0),
-    zoneSeconds_(0),
-    auditSeconds_(0),
-    crossingsLeft_(0)
+    zones_()
 {}
 
 
@@ -78,7 +66,7 @@ bool Foam::polymer::contactProjection::reprojectChain
     v = velocities;
     if (iter < 0)
     {
-        if (!notConverged_)
+        if (!counts_.notConverged)
         {
             WarningInFunction
                 << "The re-projection of chain " << chains_.globalId(c)
@@ -88,7 +76,7 @@ bool Foam::polymer::contactProjection::reprojectChain
                 << " chains are counted in the final report (constraint"
                 << " exactRods always converges)" << endl;
         }
-        ++notConverged_;
+        ++counts_.notConverged;
         return false;
     }
     constraint_.correctChainVelocities(chains_, c, residual);
@@ -234,7 +222,7 @@ bool Foam::polymer::contactProjection::checkPaths
                 << "Audit: rods (beads " << crossing.rodA << ") and ("
                 << crossing.rodB << ") cross at time " << time
                 << " on paths the re-projection did not move" << endl;
-            ++crossingsLeft_;
+            ++counts_.crossingsLeft;
             continue;
         }
         if (!zones_.merge(a, b, crossing.shift))
@@ -271,7 +259,7 @@ void Foam::polymer::contactProjection::restoreZones
                 chains_.positions()[i] = positionsAfter[i];
                 chains_.velocities()[i] = velocitiesAfter[i];
             }
-            ++leftOff_;
+            ++counts_.leftOff;
         }
     }
 }
@@ -286,17 +274,17 @@ void Foam::polymer::contactProjection::countZones
     forAll(placed_, z)
     {
         const bool wrapped = zones_.held(placed_[z][0]);
-        ++zonesFormed_;
+        ++counts_.zonesFormed;
         for (const label c : placed_[z])
         {
-            ++zoneChainSteps_;
-            stoppedChainSteps_ += (fractions_[z] < 1 && !wrapped);
-            heldChainSteps_ += (fractions_[z] == 0);
-            wrappedChainSteps_ += wrapped;
+            ++counts_.zoneChainSteps;
+            counts_.stoppedChainSteps += (fractions_[z] < 1 && !wrapped);
+            counts_.heldChainSteps += (fractions_[z] == 0);
+            counts_.wrappedChainSteps += wrapped;
             const scalar m = chains_.type(c).beadMass();
             for (label i = chains_.start(c); i < chains_.end(c); ++i)
             {
-                energyRemoved_ +=
+                counts_.energyRemoved +=
                     0.5*m*(magSqr(velocitiesAfter[i]) - magSqr(v[i]));
             }
         }
@@ -408,7 +396,7 @@ void Foam::polymer::contactProjection::project
     {
         return;
     }
-    reprojected_ += nOff;
+    counts_.reprojected += nOff;
 
     // The contacts' state; the projection's directions are its rods
     const List<point> positionsAfter(chains_.positions());
@@ -433,9 +421,9 @@ void Foam::polymer::contactProjection::project
     {
         cpuTime zoneTimer;
         placeZones(wall, positionsStart, positionsAfter, velocitiesAfter);
-        zoneSeconds_ += zoneTimer.cpuTimeIncrement();
+        counts_.zoneSeconds += zoneTimer.cpuTimeIncrement();
         const bool changed = checkPaths(audit, moved, positionsAfter, time);
-        auditSeconds_ += zoneTimer.cpuTimeIncrement();
+        counts_.auditSeconds += zoneTimer.cpuTimeIncrement();
         if (!changed)
         {
             countZones(velocitiesAfter);
@@ -461,51 +449,69 @@ void Foam::polymer::contactProjection::correct
 {
     cpuTime timer;
     project(positionsStart, deltaT, time, wall);
-    seconds_ += timer.cpuTimeIncrement();
+    counts_.seconds += timer.cpuTimeIncrement();
+}
+
+
+Foam::polymer::contactProjection::runCounts
+Foam::polymer::contactProjection::runCounts::reduced() const
+{
+    runCounts all(*this);
+    packedReduction reduction;
+    reduction.sum(all.reprojected);
+    reduction.sum(all.notConverged);
+    reduction.sum(all.zoneChainSteps);
+    reduction.sum(all.stoppedChainSteps);
+    reduction.sum(all.heldChainSteps);
+    reduction.sum(all.wrappedChainSteps);
+    reduction.sum(all.leftOff);
+    reduction.sum(all.zonesFormed);
+    reduction.sum(all.energyRemoved);
+    reduction.sum(all.seconds);
+    reduction.sum(all.zoneSeconds);
+    reduction.sum(all.auditSeconds);
+    reduction.sum(all.crossingsLeft);
+    reduction.reduce();
+    return all;
 }
 
 
 void Foam::polymer::contactProjection::writeReport(Ostream& os) const
 {
+    const runCounts all(counts_.reduced());
     os  << "    re-projection after contacts: chain-steps "
-        << returnReduce(scalar(reprojected_), sumOp<scalar>())
-        << ", not converged "
-        << returnReduce(scalar(notConverged_), sumOp<scalar>())
-        << "; rigid impact zones "
-        << returnReduce(scalar(zonesFormed_), sumOp<scalar>())
-        << " of " << returnReduce(scalar(zoneChainSteps_), sumOp<scalar>())
+        << scalar(all.reprojected)
+        << ", not converged " << scalar(all.notConverged)
+        << "; rigid impact zones " << scalar(all.zonesFormed)
+        << " of " << scalar(all.zoneChainSteps)
         << " chain-steps, stopped short by a wall "
-        << returnReduce(scalar(stoppedChainSteps_), sumOp<scalar>())
-        << ", held at the step's start "
-        << returnReduce(scalar(heldChainSteps_), sumOp<scalar>())
-        << ", kinetic energy removed "
-        << returnReduce(energyRemoved_, sumOp<scalar>())
-        << "; chain-steps left off "
-        << returnReduce(scalar(leftOff_), sumOp<scalar>())
-        << ", crossings left "
-        << returnReduce(scalar(crossingsLeft_), sumOp<scalar>())
+        << scalar(all.stoppedChainSteps)
+        << ", held at the step's start " << scalar(all.heldChainSteps)
+        << ", kinetic energy removed " << all.energyRemoved
+        << "; chain-steps left off " << scalar(all.leftOff)
+        << ", crossings left " << scalar(all.crossingsLeft)
         << "; chain-steps held for a zone wrapping around the period "
-        << returnReduce(scalar(wrappedChainSteps_), sumOp<scalar>())
-        << "; CPU " << returnReduce(seconds_, sumOp<scalar>())
-        << " s (placing zones " << returnReduce(zoneSeconds_, sumOp<scalar>())
-        << " s, auditing the paths "
-        << returnReduce(auditSeconds_, sumOp<scalar>()) << " s)" << nl;
+        << scalar(all.wrappedChainSteps)
+        << "; CPU " << all.seconds
+        << " s (placing zones " << all.zoneSeconds
+        << " s, auditing the paths " << all.auditSeconds << " s)" << nl;
 }
 
 
 void Foam::polymer::contactProjection::writeRunTotals(dictionary& dict) const
 {
+    const runCounts all(counts_.reduced());
     dictionary& totals = dict.subDictOrAdd("reprojection");
-    runTotals::add(totals, "reprojected", returnReduce(scalar(reprojected_), sumOp<scalar>()));
-    runTotals::add(totals, "notConverged", returnReduce(scalar(notConverged_), sumOp<scalar>()));
-    runTotals::add(totals, "zoneChainSteps", returnReduce(scalar(zoneChainSteps_), sumOp<scalar>()));
-    runTotals::add(totals, "stoppedChainSteps", returnReduce(scalar(stoppedChainSteps_), sumOp<scalar>()));
-    runTotals::add(totals, "heldChainSteps", returnReduce(scalar(heldChainSteps_), sumOp<scalar>()));
-    runTotals::add(totals, "wrappedChainSteps", returnReduce(scalar(wrappedChainSteps_), sumOp<scalar>()));
-    runTotals::add(totals, "leftOff", returnReduce(scalar(leftOff_), sumOp<scalar>()));
-    runTotals::add(totals, "zonesFormed", returnReduce(scalar(zonesFormed_), sumOp<scalar>()));
-    runTotals::add(totals, "crossingsLeft", returnReduce(scalar(crossingsLeft_), sumOp<scalar>()));
-    runTotals::add(totals, "energyRemoved", returnReduce(energyRemoved_, sumOp<scalar>()));
+    runTotals::add(totals, "reprojected", all.reprojected);
+    runTotals::add(totals, "notConverged", all.notConverged);
+    runTotals::add(totals, "zoneChainSteps", all.zoneChainSteps);
+    runTotals::add(totals, "stoppedChainSteps", all.stoppedChainSteps);
+    runTotals::add(totals, "heldChainSteps", all.heldChainSteps);
+    runTotals::add(totals, "wrappedChainSteps", all.wrappedChainSteps);
+    runTotals::add(totals, "leftOff", all.leftOff);
+    runTotals::add(totals, "zonesFormed", all.zonesFormed);
+    runTotals::add(totals, "crossingsLeft", all.crossingsLeft);
+    runTotals::add(totals, "energyRemoved", all.energyRemoved);
 }
 
 
@@ -516,16 +522,16 @@ void Foam::polymer::contactProjection::readRunTotals(const dictionary& dict)
     {
         return;
     }
-    runTotals::read(*saved, "reprojected", reprojected_);
-    runTotals::read(*saved, "notConverged", notConverged_);
-    runTotals::read(*saved, "zoneChainSteps", zoneChainSteps_);
-    runTotals::read(*saved, "stoppedChainSteps", stoppedChainSteps_);
-    runTotals::read(*saved, "heldChainSteps", heldChainSteps_);
-    runTotals::read(*saved, "wrappedChainSteps", wrappedChainSteps_);
-    runTotals::read(*saved, "leftOff", leftOff_);
-    runTotals::read(*saved, "zonesFormed", zonesFormed_);
-    runTotals::read(*saved, "crossingsLeft", crossingsLeft_);
-    runTotals::read(*saved, "energyRemoved", energyRemoved_);
+    runTotals::read(*saved, "reprojected", counts_.reprojected);
+    runTotals::read(*saved, "notConverged", counts_.notConverged);
+    runTotals::read(*saved, "zoneChainSteps", counts_.zoneChainSteps);
+    runTotals::read(*saved, "stoppedChainSteps", counts_.stoppedChainSteps);
+    runTotals::read(*saved, "heldChainSteps", counts_.heldChainSteps);
+    runTotals::read(*saved, "wrappedChainSteps", counts_.wrappedChainSteps);
+    runTotals::read(*saved, "leftOff", counts_.leftOff);
+    runTotals::read(*saved, "zonesFormed", counts_.zonesFormed);
+    runTotals::read(*saved, "crossingsLeft", counts_.crossingsLeft);
+    runTotals::read(*saved, "energyRemoved", counts_.energyRemoved);
 }
 
 

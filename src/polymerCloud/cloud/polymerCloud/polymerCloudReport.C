@@ -16,6 +16,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "polymerCloud.H"
+#include "packedReduction.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -111,8 +112,34 @@ void Foam::polymer::polymerCloud::writeSummary(Ostream& os) const
 
 void Foam::polymer::polymerCloud::writeReport(Ostream& os) const
 {
-    const scalar seconds = returnReduce(evolveSeconds_, maxOp<scalar>());
-    const scalar beadSteps = returnReduce(beadSteps_, sumOp<scalar>());
+    // The cloud's own figures over all processors, in one reduction
+    scalar seconds = evolveSeconds_;
+    scalar beadSteps = beadSteps_;
+    label nInjected = nInjected_;
+    label nWrapped = distribution_->nWrapped();
+    label nMoved = distribution_->nMoved();
+    scalar movingSeconds = distribution_->seconds();
+    scalar sampleSeconds =
+        flow_->exchangeSeconds() + coupling_->exchangeSeconds();
+    label maxOutside = stepper_->maxBeadsOutside();
+    scalar beadStepsOutside = stepper_->beadStepsOutside();
+    vector momentumLost = coupling_->momentumLost();
+    scalar beadStepsLost = coupling_->beadStepsLost();
+    {
+        packedReduction all;
+        all.max(seconds);
+        all.sum(beadSteps);
+        all.sum(nInjected);
+        all.sum(nWrapped);
+        all.sum(nMoved);
+        all.max(movingSeconds);
+        all.max(sampleSeconds);
+        all.max(maxOutside);
+        all.sum(beadStepsOutside);
+        all.sum(momentumLost);
+        all.sum(beadStepsLost);
+        all.reduce();
+    }
 
     os  << name() << ": " << beadSteps << " bead-steps in " << seconds
         << " s of cloud evolution";
@@ -131,40 +158,25 @@ void Foam::polymer::polymerCloud::writeReport(Ostream& os) const
     {
         contactProjection_->writeReport(os);
     }
-    os
-        << "    chains injected " << returnReduce(nInjected_, sumOp<label>())
-        << ", chains carried across cyclic patches "
-        << returnReduce(distribution_->nWrapped(), sumOp<label>())
-        << ", chains moved between processors "
-        << returnReduce(distribution_->nMoved(), sumOp<label>()) << nl;
+    os  << "    chains injected " << nInjected
+        << ", chains carried across cyclic patches " << nWrapped
+        << ", chains moved between processors " << nMoved << nl;
     if (Pstream::parRun())
     {
         collisionGroups_->writeReport(os);
         os  << "    parallel exchanges (wall clock, slowest processor):"
-            << " moving chains "
-            << returnReduce(distribution_->seconds(), maxOp<scalar>())
-            << " s, beads' flow and momentum "
-            << returnReduce
-               (
-                   flow_->exchangeSeconds() + coupling_->exchangeSeconds(),
-                   maxOp<scalar>()
-               )
-            << " s" << nl;
+            << " moving chains " << movingSeconds
+            << " s, beads' flow and momentum " << sampleSeconds << " s" << nl;
         writeProcessorLoads(os);
     }
-    os
-        << "    beads " << nParcels() << ", outside the mesh "
+    os  << "    beads " << nParcels() << ", outside the mesh "
         << nBeadsOutside() << " (checked every step: at most "
-        << returnReduce(stepper_->maxBeadsOutside(), maxOp<label>()) << " in a step, "
-        << returnReduce(stepper_->beadStepsOutside(), sumOp<scalar>())
+        << maxOutside << " in a step, " << beadStepsOutside
         << " bead-steps in all)";
     if (coupling_->twoWay())
     {
-        os  << "; momentum they could not give the solvent "
-            << returnReduce(coupling_->momentumLost(), sumOp<vector>())
-            << " in "
-            << returnReduce(coupling_->beadStepsLost(), sumOp<scalar>())
-            << " bead-steps";
+        os  << "; momentum they could not give the solvent " << momentumLost
+            << " in " << beadStepsLost << " bead-steps";
     }
     os  << nl;
 }

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "polymerCoupling.H"
+#include "packedReduction.H"
 #include "field.H"
 #include "checkedInput.H"
 #include "fvmSup.H"
@@ -333,15 +334,16 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::polymer::polymerCoupling::SU
 
 void Foam::polymer::polymerCoupling::writeRunTotals(dictionary& dict) const
 {
+    vector momentumLost = momentumLost_;
+    scalar beadStepsLost = beadStepsLost_;
+    packedReduction all;
+    all.sum(momentumLost);
+    all.sum(beadStepsLost);
+    all.reduce();
+
     dictionary& totals = dict.subDictOrAdd("coupling");
-    runTotals::add
-    (
-        totals, "momentumLost", returnReduce(momentumLost_, sumOp<vector>())
-    );
-    runTotals::add
-    (
-        totals, "beadStepsLost", returnReduce(beadStepsLost_, sumOp<scalar>())
-    );
+    runTotals::add(totals, "momentumLost", momentumLost);
+    runTotals::add(totals, "beadStepsLost", beadStepsLost);
 }
 
 

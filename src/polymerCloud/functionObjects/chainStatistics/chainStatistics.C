@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "chainStatistics.H"
+#include "packedReduction.H"
 #include "processorNeighbours.H"
 #include "cellLocator.H"
 #include "periodicImages.H"
@@ -166,14 +167,20 @@ void Foam::polymer::cloudFunctions::chainStatistics::writeLine()
     }
 
     label nChains = chains.nChains();
-    reduce(nChains, sumOp<label>());
-    reduce(nOpen, sumOp<label>());
+    label nRodsOutside = rodsOutside();
+    {
+        packedReduction all;
+        all.sum(nChains);
+        all.sum(nOpen);
+        all.max(rodError);
+        all.sum(nRodsOutside);
+        all.reduce();
+    }
     reduce(sumRg2, sumOp<scalar>());
     reduce(sumRee2, sumOp<scalar>());
     reduce(twiceKinetic, sumOp<scalar>());
     reduce(dof, sumOp<scalar>());
     reduce(dofKT, sumOp<scalar>());
-    reduce(rodError, maxOp<scalar>());
 
     const constraintCounters interval =
         cloud_.constraint().intervalCount().reduced();
@@ -185,7 +192,6 @@ void Foam::polymer::cloudFunctions::chainStatistics::writeLine()
         cloud_.collision().totalCount().reduced();
     const wallCounters totalWall = cloud_.wall().totalCount().reduced();
     const label nOutside = cloud_.nBeadsOutside();
-    const label nRodsOutside = returnReduce(rodsOutside(), sumOp<label>());
 
     if (Pstream::master())
     {

@@ -9,6 +9,10 @@ Description
     resident memory to mpiCounts.<rank> in the working directory:
         rank sends sendBytes partners collectives collectiveBytes maxRSSkB
     and on a second line the messages sent to each rank, 0 to size - 1.
+    With MPICOUNTS_TRACE=<rank> in the environment, that rank also writes
+    the call stack of each message it sends to mpiTrace.<rank>, between
+    lines "send" and "end" (glibc's backtrace_symbols_fd), to find which
+    code sends them.
     Build: mpicc -O2 -shared -fPIC -o libmpiCounts.so mpiCounts.c
     Use:   mpirun -x LD_PRELOAD=$PWD/libmpiCounts.so ...
 \*---------------------------------------------------------------------------*/
@@ -16,6 +20,10 @@ Description
 #include <mpi.h>
 #include <stdio.h>
 #include <sys/resource.h>
+#include <execinfo.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <unistd.h>
 
 #define MAX_RANKS 4096
 
@@ -29,10 +37,42 @@ static long long bytesOf(int count, MPI_Datatype type)
     return (long long)count*size;
 }
 
+/* The call stack of a send, for MPICOUNTS_TRACE's rank (-1: not traced;
+   -2: not asked yet) */
+static int traceFd = -2;
+
+static void trace(void)
+{
+    void* frames[48];
+    int n;
+
+    if (traceFd == -2)
+    {
+        const char* traced = getenv("MPICOUNTS_TRACE");
+        int rank = -1;
+        char name[64];
+        traceFd = -1;
+        PMPI_Comm_rank(MPI_COMM_WORLD, &rank);
+        if (traced && atoi(traced) == rank)
+        {
+            snprintf(name, sizeof(name), "mpiTrace.%d", rank);
+            traceFd = open(name, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        }
+    }
+    if (traceFd >= 0)
+    {
+        n = backtrace(frames, 48);
+        dprintf(traceFd, "send\n");
+        backtrace_symbols_fd(frames, n, traceFd);
+        dprintf(traceFd, "end\n");
+    }
+}
+
 static void sent(int count, MPI_Datatype type, int dest)
 {
     ++sends;
     sendBytes += bytesOf(count, type);
+    trace();
     if (dest >= 0 && dest < MAX_RANKS)
     {
         ++partner[dest];
