@@ -2,7 +2,7 @@
 """The messages a rank sent, by the code that sent them.
 
 Reads the mpiTrace.<rank> files that mpiCounts writes with MPICOUNTS_TRACE
-(one call stack a message), names each message by the first function of its
+(each distinct call stack with its number of messages), names each message by the first function of its
 stack that is not MPI's or a communication routine of OpenFOAM's (Pstream's
 gathers, scatters, reductions and exchanges), and prints a markdown table:
 a row a function, a column a trace.
@@ -19,8 +19,8 @@ frame = re.compile(r"^(\S+?)\(([^)+]*)(\+0x[0-9a-f]+)?\)")
 
 def stacks(path):
     text = open(path, errors="replace").read()
-    for block in re.findall(r"^send\n(.*?)^end$", text, re.S | re.M):
-        yield [m.groups()[:2] for m in map(frame.match, block.splitlines()) if m]
+    for count, block in re.findall(r"^send (\d+)\n(.*?)^end$", text, re.S | re.M):
+        yield int(count), [m.groups()[:2] for m in map(frame.match, block.splitlines()) if m]
 
 def demangle(names):
     names = sorted(n for n in names if n)
@@ -38,9 +38,12 @@ def caller(stack, names):
 def main(args):
     traces = [a.rsplit("=", 1) for a in args]
     parsed = {label: list(stacks(path)) for label, path in traces}
-    names = demangle({s for st in parsed.values() for f in st for _, s in f})
-    counts = {label: collections.Counter(caller(s, names) for s in st)
-              for label, st in parsed.items()}
+    names = demangle({s for st in parsed.values() for _, f in st for _, s in f})
+    counts = {}
+    for label, st in parsed.items():
+        counts[label] = collections.Counter()
+        for n, frames in st:
+            counts[label][caller(frames, names)] += n
     rows = collections.Counter()
     for c in counts.values():
         rows.update(c)

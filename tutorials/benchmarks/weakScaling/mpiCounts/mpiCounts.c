@@ -10,9 +10,10 @@ Description
         rank sends sendBytes partners collectives collectiveBytes maxRSSkB
     and on a second line the messages sent to each rank, 0 to size - 1.
     With MPICOUNTS_TRACE=<rank> in the environment, that rank also writes
-    the call stack of each message it sends to mpiTrace.<rank>, between
-    lines "send" and "end" (glibc's backtrace_symbols_fd), to find which
-    code sends them.
+    to mpiTrace.<rank> each distinct call stack of the messages it sent,
+    between a line "send <number of messages>" and a line "end" (glibc's
+    backtrace_symbols_fd; a stack without frames: the messages beyond the
+    table's room), to find which code sends them.
     Build: mpicc -O2 -shared -fPIC -o libmpiCounts.so mpiCounts.c
     Use:   mpirun -x LD_PRELOAD=$PWD/libmpiCounts.so ...
 \*---------------------------------------------------------------------------*/
@@ -23,6 +24,7 @@ Description
 #include <execinfo.h>
 #include <fcntl.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 #define MAX_RANKS 4096
@@ -37,35 +39,89 @@ static long long bytesOf(int count, MPI_Datatype type)
     return (long long)count*size;
 }
 
-/* The call stack of a send, for MPICOUNTS_TRACE's rank (-1: not traced;
-   -2: not asked yet) */
-static int traceFd = -2;
+/* The distinct call stacks of the sends of MPICOUNTS_TRACE's rank, each
+   with its number of sends, written at MPI_Finalize */
+#define MAX_FRAMES 32
+#define MAX_STACKS 8192
+struct stack { int nFrames; long long count; void* frames[MAX_FRAMES]; };
+static struct stack* stacks = NULL;
+static int traced = -1;  /* -1: not asked yet; 0: no; 1: yes */
+static long long untraced = 0;
 
 static void trace(void)
 {
-    void* frames[48];
-    int n;
+    void* frames[MAX_FRAMES];
+    int n, i;
+    unsigned long long h = 1469598103934665603ULL;
 
-    if (traceFd == -2)
+    if (traced < 0)
     {
-        const char* traced = getenv("MPICOUNTS_TRACE");
-        int rank = -1;
-        char name[64];
-        traceFd = -1;
-        PMPI_Comm_rank(MPI_COMM_WORLD, &rank);
-        if (traced && atoi(traced) == rank)
+        const char* rank = getenv("MPICOUNTS_TRACE");
+        int me = -1;
+        PMPI_Comm_rank(MPI_COMM_WORLD, &me);
+        traced = rank && atoi(rank) == me;
+        if (traced)
         {
-            snprintf(name, sizeof(name), "mpiTrace.%d", rank);
-            traceFd = open(name, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            stacks = calloc(MAX_STACKS, sizeof(struct stack));
+            traced = stacks != NULL;
         }
     }
-    if (traceFd >= 0)
+    if (!traced)
     {
-        n = backtrace(frames, 48);
-        dprintf(traceFd, "send\n");
-        backtrace_symbols_fd(frames, n, traceFd);
-        dprintf(traceFd, "end\n");
+        return;
     }
+    n = backtrace(frames, MAX_FRAMES);
+    for (i = 0; i < n; ++i)
+    {
+        h = (h ^ (unsigned long long)frames[i])*1099511628211ULL;
+    }
+    /* open addressing: the first slot that holds this stack or none */
+    for (i = 0; i < MAX_STACKS; ++i)
+    {
+        struct stack* st = &stacks[(h + i) % MAX_STACKS];
+        if (st->nFrames == 0)
+        {
+            st->nFrames = n;
+            memcpy(st->frames, frames, n*sizeof(void*));
+        }
+        if (st->nFrames == n && !memcmp(st->frames, frames, n*sizeof(void*)))
+        {
+            ++st->count;
+            return;
+        }
+    }
+    ++untraced;
+}
+
+static void writeTrace(int rank)
+{
+    char name[64];
+    int i, fd;
+
+    if (traced != 1)
+    {
+        return;
+    }
+    snprintf(name, sizeof(name), "mpiTrace.%d", rank);
+    fd = open(name, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0)
+    {
+        return;
+    }
+    for (i = 0; i < MAX_STACKS; ++i)
+    {
+        if (stacks[i].count)
+        {
+            dprintf(fd, "send %lld\n", stacks[i].count);
+            backtrace_symbols_fd(stacks[i].frames, stacks[i].nFrames, fd);
+            dprintf(fd, "end\n");
+        }
+    }
+    if (untraced)
+    {
+        dprintf(fd, "send %lld\nend\n", untraced);
+    }
+    close(fd);
 }
 
 static void sent(int count, MPI_Datatype type, int dest)
@@ -197,5 +253,6 @@ int MPI_Finalize(void)
         fprintf(out, "\n");
         fclose(out);
     }
+    writeTrace(rank);
     return PMPI_Finalize();
 }
