@@ -12,7 +12,24 @@ License
 
 #include "sweptBoxGrid.H"
 
+#include <algorithm>
 #include <cmath>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// The empty slot of the pairs' key table
+constexpr uint64_t noKey = ~uint64_t(0);
+
+inline uint64_t keyHash(const uint64_t key)
+{
+    const uint64_t h = key*0x9E3779B97F4A7C15ull;
+    return h ^ (h >> 29);
+}
+
+} // End anonymous namespace
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -21,7 +38,12 @@ Foam::polymer::sweptBoxGrid::sweptBoxGrid()
     rods_(nullptr),
     imageShift_(),
     imageCode_(),
+    latticeAxis_(),
+    latticeStep_(),
+    imageOfCode_(),
+    reachingImages_(),
     box_(),
+    firstCell_(),
     bounds_(boundBox::invertedBox),
     region_(boundBox::invertedBox),
     cellSize_(1),
@@ -30,7 +52,7 @@ Foam::polymer::sweptBoxGrid::sweptBoxGrid()
     pairs_(),
     pairShift_(),
     rodPairs_(),
-    pairSet_()
+    pairKeys_()
 {}
 
 
@@ -55,6 +77,74 @@ void Foam::polymer::sweptBoxGrid::buildImages(const UList<vector>& lattice)
         }
         digit *= 5;
     }
+
+    // Lattice vectors along distinct axes (exact zeros elsewhere, as
+    // blockMesh's cyclic boxes give) have their images found per axis
+    labelList axes(lattice.size(), -1);
+    bool aligned = true;
+    forAll(lattice, d)
+    {
+        label nonZero = 0;
+        for (direction a = 0; a < vector::nComponents; ++a)
+        {
+            if (lattice[d][a] != 0)
+            {
+                axes[d] = a;
+                ++nonZero;
+            }
+        }
+        aligned = aligned && nonZero == 1 && !axes.found(axes[d], d + 1);
+    }
+    latticeAxis_ = aligned ? axes : labelList();
+    latticeStep_.setSize(latticeAxis_.size());
+    forAll(latticeAxis_, d)
+    {
+        latticeStep_[d] = lattice[d][latticeAxis_[d]];
+    }
+
+    const label largest = (digit - 1)/2;
+    imageOfCode_ = labelList(digit, -1);
+    forAll(imageCode_, image)
+    {
+        imageOfCode_[imageCode_[image] + largest] = image;
+    }
+}
+
+
+bool Foam::polymer::sweptBoxGrid::newPairKey(const uint64_t key)
+{
+    // Linear probing, at most half full
+    if (2*(size_t(pairs_.size()) + 1) > pairKeys_.size())
+    {
+        std::vector<uint64_t> keys(max(size_t(64), 2*pairKeys_.size()), noKey);
+        std::swap(keys, pairKeys_);
+        const size_t mask = pairKeys_.size() - 1;
+        for (const uint64_t k : keys)
+        {
+            if (k != noKey)
+            {
+                size_t i = keyHash(k) & mask;
+                while (pairKeys_[i] != noKey)
+                {
+                    i = (i + 1) & mask;
+                }
+                pairKeys_[i] = k;
+            }
+        }
+    }
+
+    const size_t mask = pairKeys_.size() - 1;
+    size_t i = keyHash(key) & mask;
+    while (pairKeys_[i] != noKey)
+    {
+        if (pairKeys_[i] == key)
+        {
+            return false;
+        }
+        i = (i + 1) & mask;
+    }
+    pairKeys_[i] = key;
+    return true;
 }
 
 
@@ -94,7 +184,7 @@ void Foam::polymer::sweptBoxGrid::addPair
         (uint64_t(rodA)*uint64_t(nRods) + uint64_t(rodB))*125u
       + uint64_t(code + 62);
 
-    if (pairSet_.insert(key).second)
+    if (newPairKey(key))
     {
         const label pairi = pairs_.size();
         pairs_.append(labelPair(rodA, rodB));
@@ -142,42 +232,112 @@ void Foam::polymer::sweptBoxGrid::layCells(const label nRods)
 }
 
 
-template<class CellOp>
-void Foam::polymer::sweptBoxGrid::forCells
+void Foam::polymer::sweptBoxGrid::cellRange
 (
     const boundBox& box,
-    const CellOp& op
+    Vector<label>& lower,
+    Vector<label>& upper
 ) const
 {
     // A box reaching beyond the laid region (a grown box, a translated
     // one) takes the edge cells there: two boxes that overlap still share
-    // a cell, and the exact box test decides
-    label lower[3], upper[3];
+    // a cell, and the exact box test decides. The clamped floor, without
+    // a call to floor: x truncates to floor(x) for 0 <= x < n - 1
+    const auto cell = [this](const scalar x, const direction d)
+    {
+        const scalar last = nCells_[d] - 1;
+        return x <= 0 ? label(0) : x >= last ? label(last) : label(x);
+    };
     for (direction d = 0; d < vector::nComponents; ++d)
     {
         const scalar origin = region_.min()[d];
-        lower[d] = min
-        (
-            max(label(std::floor((box.min()[d] - origin)/cellSize_)), 0),
-            nCells_[d] - 1
-        );
-        upper[d] = min
-        (
-            max(label(std::floor((box.max()[d] - origin)/cellSize_)), 0),
-            nCells_[d] - 1
-        );
+        lower[d] = cell((box.min()[d] - origin)/cellSize_, d);
+        upper[d] = cell((box.max()[d] - origin)/cellSize_, d);
     }
+}
 
-    for (label i = lower[0]; i <= upper[0]; ++i)
+
+void Foam::polymer::sweptBoxGrid::reachingImages
+(
+    const boundBox& box,
+    DynamicList<label>& images
+) const
+{
+    // Translations that cannot bring the box to the bounds, with a margin
+    // over the round-off of query's own test, are passed over: most of
+    // them on a dense periodic mesh, and the test in query is the one
+    // that decides
+    const scalar margin =
+        1e-9*(cmptMax(cmptMag(bounds_.min())) + cmptMax(cmptMag(bounds_.max())));
+    const vector reachMin(bounds_.min() - box.max() - vector::uniform(margin));
+    const vector reachMax(bounds_.max() - box.min() + vector::uniform(margin));
+    const auto reaches = [&](const vector& shift)
     {
-        for (label j = lower[1]; j <= upper[1]; ++j)
+        return
+            shift.x() >= reachMin.x() && shift.x() <= reachMax.x()
+         && shift.y() >= reachMin.y() && shift.y() <= reachMax.y()
+         && shift.z() >= reachMin.z() && shift.z() <= reachMax.z();
+    };
+
+    images.clear();
+    if (latticeAxis_.empty())
+    {
+        forAll(imageShift_, image)
         {
-            for (label k = lower[2]; k <= upper[2]; ++k)
+            if (reaches(imageShift_[image]))
             {
-                op((i*nCells_.y() + j)*nCells_.z() + k);
+                images.append(image);
             }
         }
+        return;
     }
+
+    // Per lattice vector, the multiples -2..2 within reach along its axis
+    // (a little more: each image found is tested whole below), then every
+    // combination of them, in the images' order
+    const label nLattice = latticeAxis_.size();
+    label multiples[3][5];
+    label nMultiples[3] = {0, 0, 0};
+    label digit = 1, largest = 0;
+    for (label d = 0; d < nLattice; ++d)
+    {
+        const direction a = latticeAxis_[d];
+        const scalar slack = 1e-9*mag(latticeStep_[d]);
+        for (const label times : {0, 1, -1, 2, -2})
+        {
+            const scalar s = times*latticeStep_[d];
+            if (s >= reachMin[a] - slack && s <= reachMax[a] + slack)
+            {
+                multiples[d][nMultiples[d]++] = times*digit;
+            }
+        }
+        if (!nMultiples[d])
+        {
+            return;
+        }
+        largest += 2*digit;
+        digit *= 5;
+    }
+    label index[3] = {0, 0, 0};
+    for (label d = 0; d < nLattice; )
+    {
+        label code = 0;
+        for (label e = 0; e < nLattice; ++e)
+        {
+            code += multiples[e][index[e]];
+        }
+        const label image = imageOfCode_[code + largest];
+        if (reaches(imageShift_[image]))
+        {
+            images.append(image);
+        }
+        // The next combination, the first lattice vector's fastest
+        for (d = 0; d < nLattice && ++index[d] == nMultiples[d]; ++d)
+        {
+            index[d] = 0;
+        }
+    }
+    std::sort(images.begin(), images.end());
 }
 
 
@@ -195,21 +355,37 @@ void Foam::polymer::sweptBoxGrid::query
         return;
     }
 
-    forCells
-    (
-        box,
-        [&](const label celli)
+    // Each rod of the grid is in every cell its box spans, so a pair is
+    // tested in the first cell both boxes span, the first of them the
+    // scan meets, and passed over in the others
+    Vector<label> lower, upper;
+    cellRange(box, lower, upper);
+    for (label i = lower.x(); i <= upper.x(); ++i)
+    {
+        for (label j = lower.y(); j <= upper.y(); ++j)
         {
-            for (const label other : cells_[celli])
+            for (label k = lower.z(); k <= upper.z(); ++k)
             {
-                // rod + shift meets other: other - shift is rod's partner
-                if (box_[other].overlaps(box))
+                const label celli = (i*nCells_.y() + j)*nCells_.z() + k;
+                for (const label other : cells_[celli])
                 {
-                    addPair(rod, other, -imageCode_[image], -shift);
+                    const Vector<label>& first = firstCell_[other];
+                    if
+                    (
+                        max(lower.x(), first.x()) == i
+                     && max(lower.y(), first.y()) == j
+                     && max(lower.z(), first.z()) == k
+                     && box_[other].overlaps(box)
+                    )
+                    {
+                        // rod + shift meets other: other - shift is rod's
+                        // partner
+                        addPair(rod, other, -imageCode_[image], -shift);
+                    }
                 }
             }
         }
-    );
+    }
 }
 
 
@@ -220,40 +396,30 @@ void Foam::polymer::sweptBoxGrid::insert(const label rod)
     // (rod, other + translation) is found once, by the rod inserted
     // second
     bounds_.add(box_[rod]);
-    forCells
-    (
-        box_[rod],
-        [&](const label celli)
+    Vector<label> lower, upper;
+    cellRange(box_[rod], lower, upper);
+    firstCell_[rod] = lower;
+    for (label i = lower.x(); i <= upper.x(); ++i)
+    {
+        for (label j = lower.y(); j <= upper.y(); ++j)
         {
-            std::vector<label>& cell = cells_[celli];
-            if (cell.empty() || cell.back() != rod)
+            for (label k = lower.z(); k <= upper.z(); ++k)
             {
-                cell.push_back(rod);
+                std::vector<label>& cell =
+                    cells_[(i*nCells_.y() + j)*nCells_.z() + k];
+                if (cell.empty() || cell.back() != rod)
+                {
+                    cell.push_back(rod);
+                }
             }
         }
-    );
+    }
 
-    // Translations that cannot bring the box to the bounds, with a margin
-    // over the round-off of query's own test, are passed over here: most
-    // of them on a dense periodic mesh, and the test in query is the one
-    // that decides
-    const boundBox& box = box_[rod];
-    const scalar margin =
-        1e-9*(cmptMax(cmptMag(bounds_.min())) + cmptMax(cmptMag(bounds_.max())));
-    const vector reachMin(bounds_.min() - box.max() - vector::uniform(margin));
-    const vector reachMax(bounds_.max() - box.min() + vector::uniform(margin));
-    forAll(imageShift_, image)
+    DynamicList<label>& images = reachingImages_;
+    reachingImages(box_[rod], images);
+    for (const label image : images)
     {
-        const vector& shift = imageShift_[image];
-        if
-        (
-            shift.x() >= reachMin.x() && shift.x() <= reachMax.x()
-         && shift.y() >= reachMin.y() && shift.y() <= reachMax.y()
-         && shift.z() >= reachMin.z() && shift.z() <= reachMax.z()
-        )
-        {
-            query(rod, image);
-        }
+        query(rod, image);
     }
 }
 
@@ -290,10 +456,15 @@ void Foam::polymer::sweptBoxGrid::build
     }
 
     layCells(box_.size());
+    firstCell_.setSize(box_.size());
     pairs_.clear();
     pairShift_.clear();
-    pairSet_.clear();
+    std::fill(pairKeys_.begin(), pairKeys_.end(), noKey);
     rodPairs_.assign(rods.size(), std::vector<label>());
+
+    // A rod meets only the rods inserted before it: the bounds of those
+    // pass over the images that reach none of them
+    bounds_ = boundBox::invertedBox;
     forAll(box_, rod)
     {
         insert(rod);
