@@ -391,7 +391,11 @@ void Foam::polymer::chainDistribution::keepOwnReplicated
 }
 
 
-void Foam::polymer::chainDistribution::keepOwn(const label firstChain)
+void Foam::polymer::chainDistribution::keepOwn
+(
+    const label firstChain,
+    const label nCreated
+)
 {
     if (!Pstream::parRun())
     {
@@ -416,7 +420,8 @@ void Foam::polymer::chainDistribution::keepOwn(const label firstChain)
     const labelList owner(neighbours_.pointOwners(references));
 
     // Every chain kept once, unless one is outside every mesh (the master
-    // keeps those: all processors must then look at all chains)
+    // keeps those: all processors must then look at all chains, so all
+    // must hold all)
     label nKept = 0;
     forAll(owner, k)
     {
@@ -424,8 +429,17 @@ void Foam::polymer::chainDistribution::keepOwn(const label firstChain)
     }
     scalar nKeptAll = nKept;
     reduce(nKeptAll, sumOp<scalar>());
-    if (label(nKeptAll) != chains_.nChains() - firstChain)
+    const label nNew = chains_.nChains() - firstChain;
+    if (label(nKeptAll) != (nCreated < 0 ? nNew : nCreated))
     {
+        if (nCreated >= 0 && returnReduce(nNew != nCreated, orOp<bool>()))
+        {
+            FatalErrorInFunction
+                << nCreated << " chains were created and " << nKeptAll
+                << " are kept: a chain created only where it could be owned"
+                << " has no owner among those processors"
+                << exit(FatalError);
+        }
         keepOwnReplicated(firstChain);
         return;
     }

@@ -245,9 +245,11 @@ Foam::label Foam::polymer::polymerCloud::nParcels() const
 void Foam::polymer::polymerCloud::injectChains(const scalar time)
 {
     const label nChainsBefore = chains_.nChains();
-    if (injection_->inject(chains_, solution_.seed(), nextChainId_, time))
+    const label nNew =
+        injection_->inject(chains_, solution_.seed(), nextChainId_, time);
+    if (nNew)
     {
-        distribution_->keepOwn(nChainsBefore);
+        distribution_->keepOwn(nChainsBefore, nNew);
         setThermalVelocities(nChainsBefore);
         nInjected_ += chains_.nChains() - nChainsBefore;
     }

@@ -101,7 +101,7 @@ void Foam::polymer::polymerCloud::readForces(const dictionary& subModels)
 }
 
 
-void Foam::polymer::polymerCloud::initialise()
+Foam::label Foam::polymer::polymerCloud::initialise()
 {
     const dictionary& subModels = properties_.subDict("subModels");
 
@@ -110,10 +110,10 @@ void Foam::polymer::polymerCloud::initialise()
         initialisationModel::New(subModels, mesh_)
     );
 
-    // Every processor creates the same chains (the initialisations draw
-    // counter-based noise and test beads against the whole mesh); each
-    // keeps those it owns once their velocities are set
-    initialisation->create(chains_, solution_.seed());
+    // The chains are drawn from counter-based noise, so every processor
+    // draws the same: each creates those it may own (randomWalk) or all,
+    // and keeps those it owns once their velocities are set
+    const label nCreated = initialisation->create(chains_, solution_.seed());
 
     checkRods(properties_.dictionary::name()/"subModels"/"initialisation");
     if
@@ -125,6 +125,7 @@ void Foam::polymer::polymerCloud::initialise()
         checkInsideMesh(properties_.dictionary::name()/"subModels");
     }
     setThermalVelocities(0);
+    return nCreated;
 }
 
 
@@ -423,8 +424,8 @@ bool Foam::polymer::polymerCloud::startChains(const dictionary& subModels)
     }
     else
     {
-        initialise();
-        distribution_->keepOwn();
+        const label nCreated = initialise();
+        distribution_->keepOwn(0, nCreated);
         Info<< name() << ": created "
             << returnReduce(chains_.nChains(), sumOp<label>())
             << " chains with the "

@@ -81,12 +81,13 @@ void Foam::polymer::initialisationModels::file::check
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::polymer::initialisationModels::file::create
+Foam::label Foam::polymer::initialisationModels::file::create
 (
     polymerChains& chains,
     const label seed
 ) const
 {
+    const label nBefore = chains.nChains();
     IOobject io
     (
         fileName_,
@@ -145,6 +146,7 @@ void Foam::polymer::initialisationModels::file::create
             List<vector>(x.size(), Zero)
         );
     }
+    return chains.nChains() - nBefore;
 }
 
 

@@ -58,6 +58,23 @@ Foam::polymer::initialisationModels::randomWalk::randomWalk
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::point Foam::polymer::initialisationModels::randomWalk::firstBead
+(
+    const boundBox& box,
+    const label seed,
+    const label globalId,
+    const label attempt
+)
+{
+    scalar u[4];
+    chainNoise(seed, globalId).uniforms
+    (
+        0, 0, chainNoise::setUpStream, attempt, u
+    );
+    return box.min() + cmptMultiply(vector(u[0], u[1], u[2]), box.span());
+}
+
+
 Foam::List<Foam::point> Foam::polymer::initialisationModels::randomWalk::walk
 (
     const chainType& type,
@@ -71,8 +88,7 @@ Foam::List<Foam::point> Foam::polymer::initialisationModels::randomWalk::walk
     List<point> x(type.nBeads());
 
     scalar u[4];
-    noise.uniforms(0, 0, chainNoise::setUpStream, attempt, u);
-    x[0] = box.min() + cmptMultiply(vector(u[0], u[1], u[2]), box.span());
+    x[0] = firstBead(box, seed, globalId, attempt);
 
     for (label i = 1; i < x.size(); ++i)
     {
@@ -121,52 +137,46 @@ Foam::labelList Foam::polymer::initialisationModels::randomWalk::judgedHere
     const UList<List<point>>& x,
     const labelUList& drawing,
     const periodicImages& periodic,
-    const processorNeighbours& neighbours,
-    DynamicList<label>& outside
+    const boundBox& bounds,
+    boolList& claimed
 )
 {
-    // A reference bead outside every processor's bounds is outside every
-    // mesh: the master says so without asking (the whole mesh's box
-    // first, then each processor's)
-    const boundBox& bounds = neighbours.localBounds();
-    boundBox meshBounds(boundBox::invertedBox);
-    for (const boundBox& bb : neighbours.processorBounds())
-    {
-        if (bb.valid())
-        {
-            meshBounds.add(bb);
-        }
-    }
     DynamicList<label> judged;
-    for (const label n : drawing)
+    forAll(drawing, j)
     {
-        const point p = periodic.wrap(x[n][x[n].size()/2]);
-        if (bounds.contains(p))
+        const List<point>& chain = x[drawing[j]];
+        if (chain.size() && bounds.contains(periodic.wrap(chain[chain.size()/2])))
         {
-            judged.append(n);
-        }
-        else if (Pstream::master())
-        {
-            bool held = meshBounds.contains(p);
-            if (held)
-            {
-                held = false;
-                for (const boundBox& bb : neighbours.processorBounds())
-                {
-                    if (bb.contains(p))
-                    {
-                        held = true;
-                        break;
-                    }
-                }
-            }
-            if (!held)
-            {
-                outside.append(n);
-            }
+            judged.append(drawing[j]);
+            claimed[j] = true;
         }
     }
     return labelList(judged);
+}
+
+
+bool Foam::polymer::initialisationModels::randomWalk::drawnHere
+(
+    const chainType& type,
+    const boundBox& box,
+    const label seed,
+    const label globalId,
+    const label attempt,
+    const periodicImages& periodic,
+    const boundBox& bounds
+)
+{
+    // The reference bead is within nBeads/2 rods of the first bead; the
+    // first bead's image inside the cyclic patches is within a period of
+    // the reference bead's then (walksInside draws here only for chains
+    // shorter than the period)
+    const point first = periodic.wrap(firstBead(box, seed, globalId, attempt));
+    const vector reach(vector::uniform((type.nBeads()/2)*type.rodLength()));
+    return periodic.overlapsImage
+    (
+        boundBox(first - reach, first + reach),
+        bounds
+    );
 }
 
 
@@ -182,8 +192,6 @@ Foam::polymer::initialisationModels::randomWalk::walksInside
     const dictionary& dict
 )
 {
-    List<List<point>> x(walks(type, box, seed, firstId, nChains));
-
     // The beads' images inside the cyclic patches are what must be in
     // the mesh
     const periodicImages& periodic = periodicImages::New(mesh);
@@ -192,56 +200,50 @@ Foam::polymer::initialisationModels::randomWalk::walksInside
     {
         neighbours.reset(new processorNeighbours(mesh));
     }
-    labelList drawing(identity(nChains));
-    for (label attempt = 1; drawing.size(); ++attempt)
-    {
-        DynamicList<label> outside;
-        const labelList judged
-        (
-            neighbours.valid()
-          ? judgedHere(x, drawing, periodic, neighbours(), outside)
-          : drawing
-        );
-        pointField images(judged.size()*type.nBeads());
-        label k = 0;
-        for (const label n : judged)
-        {
-            for (const point& p : x[n])
-            {
-                images[k++] = periodic.wrap(p);
-            }
-        }
-        const labelList owners
-        (
-            neighbours.valid()
-          ? neighbours->pointOwners(images)
-          : replicatedPointOwners(mesh, images)
-        );
 
-        forAll(judged, j)
-        {
-            const SubList<label> beadOwners
+    // In a parallel run each processor draws only the chains whose
+    // reference bead can be in its bounds: a reference bead is within
+    // nBeads/2 rods of the first bead, and so within one period of the
+    // first bead's image when the periods are along the axes and longer
+    // than that; otherwise every processor draws every chain
+    bool everyChain = !neighbours.valid();
+    const scalar reach = (type.nBeads()/2)*type.rodLength();
+    for (const vector& t : periodic.lattice())
+    {
+        everyChain =
+            everyChain
+         || reach >= cmptMax(cmptMag(t))
+         || cmptSum(cmptMag(t)) != cmptMax(cmptMag(t));
+    }
+    List<List<point>> x(nChains);
+    const auto draw = [&](const label n, const label attempt)
+    {
+        if
+        (
+            everyChain
+         || drawnHere
             (
-                owners, type.nBeads(), j*type.nBeads()
-            );
-            if (beadOwners.found(-1))
-            {
-                outside.append(judged[j]);
-            }
-        }
-        if (neighbours.valid())
+                type, box, seed, firstId + n, attempt, periodic,
+                neighbours->localBounds()
+            )
+        )
         {
-            // Every processor's, in order (a chain judged by two
-            // processors is judged alike)
-            labelList all(outside);
-            Pstream::combineGather(all, ListOps::appendEqOp<label>());
-            Pstream::combineScatter(all);
-            drawing = labelHashSet(all).sortedToc();
+            x[n] = walk(type, box, seed, firstId + n, attempt);
         }
         else
         {
-            drawing.transfer(outside);
+            x[n].clear();
         }
+    };
+    forAll(x, n)
+    {
+        draw(n, 0);
+    }
+
+    labelList drawing(identity(nChains));
+    for (label attempt = 1; drawing.size(); ++attempt)
+    {
+        drawing = rejected(type, x, drawing, periodic, neighbours, mesh);
 
         if (drawing.size() && attempt == 1000)
         {
@@ -256,7 +258,7 @@ Foam::polymer::initialisationModels::randomWalk::walksInside
         }
         for (const label n : drawing)
         {
-            x[n] = walk(type, box, seed, firstId + n, attempt);
+            draw(n, attempt);
         }
     }
 
@@ -264,14 +266,85 @@ Foam::polymer::initialisationModels::randomWalk::walksInside
 }
 
 
+Foam::labelList Foam::polymer::initialisationModels::randomWalk::rejected
+(
+    const chainType& type,
+    const UList<List<point>>& x,
+    const labelUList& drawing,
+    const periodicImages& periodic,
+    autoPtr<processorNeighbours>& neighbours,
+    const fvMesh& mesh
+)
+{
+    // Each draw judged by the processors whose bounds hold its reference
+    // bead, asking their neighbours about its beads
+    boolList claimed(drawing.size(), false);
+    const labelList judged
+    (
+        neighbours.valid()
+      ? judgedHere(x, drawing, periodic, neighbours->localBounds(), claimed)
+      : labelList(drawing)
+    );
+    pointField images(judged.size()*type.nBeads());
+    label k = 0;
+    for (const label n : judged)
+    {
+        for (const point& p : x[n])
+        {
+            images[k++] = periodic.wrap(p);
+        }
+    }
+    const labelList owners
+    (
+        neighbours.valid()
+      ? neighbours->pointOwners(images)
+      : replicatedPointOwners(mesh, images)
+    );
+
+    DynamicList<label> outside;
+    forAll(judged, j)
+    {
+        if (SubList<label>(owners, type.nBeads(), j*type.nBeads()).found(-1))
+        {
+            outside.append(judged[j]);
+        }
+    }
+    if (!neighbours.valid())
+    {
+        return labelList(outside);
+    }
+
+    // Every processor's, in order (a chain judged by two processors is
+    // judged alike), and the chains nobody judged: their reference bead is
+    // in no processor's bounds, so outside every mesh
+    Pstream::listCombineGather(claimed, orEqOp<bool>());
+    Pstream::listCombineScatter(claimed);
+    forAll(claimed, j)
+    {
+        if (!claimed[j])
+        {
+            outside.append(drawing[j]);
+        }
+    }
+    labelList all(outside);
+    Pstream::combineGather(all, ListOps::appendEqOp<label>());
+    Pstream::combineScatter(all);
+    return labelHashSet(all).sortedToc();
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::polymer::initialisationModels::randomWalk::create
+Foam::label Foam::polymer::initialisationModels::randomWalk::create
 (
     polymerChains& chains,
     const label seed
 ) const
 {
+    // Ids follow the chains created before, on every processor alike
+    const label firstId = chains.nChains();
+    label nextId = firstId;
+
     const dictionary& chainsDict = checkedInput::subDict
     (
         coeffDict_,
@@ -300,22 +373,29 @@ void Foam::polymer::initialisationModels::randomWalk::create
             chainsDict, e.keyword(), 0, "<number of chains>"
         );
 
-        const label firstId = chains.nChains();
         const List<List<point>> x
         (
             insideMesh_
-          ? walksInside(type, box_, seed, firstId, number, mesh_, coeffDict_)
-          : walks(type, box_, seed, firstId, number)
+          ? walksInside(type, box_, seed, nextId, number, mesh_, coeffDict_)
+          : walks(type, box_, seed, nextId, number)
         );
 
+        // Only the chains drawn here (walksInside: those whose reference
+        // bead can be in this processor's bounds)
         forAll(x, n)
         {
-            chains.append
-            (
-                typei, firstId + n, x[n], List<vector>(x[n].size(), Zero)
-            );
+            if (x[n].size())
+            {
+                chains.append
+                (
+                    typei, nextId + n, x[n], List<vector>(x[n].size(), Zero)
+                );
+            }
         }
+        nextId += number;
     }
+
+    return nextId - firstId;
 }
 
 

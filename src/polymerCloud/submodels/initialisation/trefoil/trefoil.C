@@ -154,7 +154,7 @@ Foam::polymer::initialisationModels::trefoil::trefoil
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::polymer::initialisationModels::trefoil::create
+Foam::label Foam::polymer::initialisationModels::trefoil::create
 (
     polymerChains& chains,
     const label seed
@@ -178,6 +178,7 @@ void Foam::polymer::initialisationModels::trefoil::create
         x,
         List<vector>(x.size(), Zero)
     );
+    return 1;
 }
 
 

@@ -93,8 +93,8 @@ Foam::label Foam::polymer::injectionModels::boxInjection::inject
     const label nNew =
         (time <= start_) ? 0 : dueBy(time) - max(dueBy(time - dt), label(0));
 
-    // Every processor feeds in the same chains (the cloud keeps each on
-    // the processor holding its reference bead)
+    // Every processor draws the same chains, each those it may own (the
+    // cloud keeps each on the processor holding its reference bead)
     if (nNew <= 0)
     {
         return 0;
@@ -112,10 +112,13 @@ Foam::label Foam::polymer::injectionModels::boxInjection::inject
     );
     forAll(x, k)
     {
-        chains.append
-        (
-            typei, nextGlobalId, x[k], List<vector>(x[k].size(), Zero)
-        );
+        if (x[k].size())
+        {
+            chains.append
+            (
+                typei, nextGlobalId, x[k], List<vector>(x[k].size(), Zero)
+            );
+        }
         ++nextGlobalId;
     }
 
