@@ -145,7 +145,11 @@ Foam::labelList Foam::polymer::initialisationModels::randomWalk::judgedHere
     forAll(drawing, j)
     {
         const List<point>& chain = x[drawing[j]];
-        if (chain.size() && bounds.contains(periodic.wrap(chain[chain.size()/2])))
+        if
+        (
+            chain.size()
+         && bounds.contains(periodic.wrap(chain[chain.size()/2]))
+        )
         {
             judged.append(drawing[j]);
             claimed[j] = true;
@@ -166,12 +170,15 @@ bool Foam::polymer::initialisationModels::randomWalk::drawnHere
     const boundBox& bounds
 )
 {
-    // The reference bead is within nBeads/2 rods of the first bead; the
-    // first bead's image inside the cyclic patches is within a period of
-    // the reference bead's then (walksInside draws here only for chains
-    // shorter than the period)
+    // The reference bead is within nBeads/2 rods of the first bead (and a
+    // margin over the walk's round-off); the first bead's image inside the
+    // cyclic patches is within a period of the reference bead's then
+    // (walksInside draws here only for chains shorter than the period)
     const point first = periodic.wrap(firstBead(box, seed, globalId, attempt));
-    const vector reach(vector::uniform((type.nBeads()/2)*type.rodLength()));
+    const vector reach
+    (
+        vector::uniform((1 + 1e-9)*(type.nBeads()/2)*type.rodLength())
+    );
     return periodic.overlapsImage
     (
         boundBox(first - reach, first + reach),
