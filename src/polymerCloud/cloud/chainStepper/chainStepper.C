@@ -406,6 +406,12 @@ void Foam::polymer::chainStepper::start()
 }
 
 
+void Foam::polymer::chainStepper::prepareDrift()
+{
+    flow_.prepare(chains_);
+}
+
+
 void Foam::polymer::chainStepper::updateDrift()
 {
     flow_.update(chains_);

@@ -20,6 +20,7 @@ const Foam::FixedList<const char*, Foam::polymer::pathTimes::nPaths>
 Foam::polymer::pathTimes::names
 ({
     "inject",
+    "interpolate the flow",
     "locate and sample",
     "integrate",
     "constrain",

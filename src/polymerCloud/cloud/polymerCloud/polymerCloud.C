@@ -380,6 +380,8 @@ void Foam::polymer::polymerCloud::evolve()
     injectChains(time);
     pathTimes_.lap(pathTimes::inject);
     stepper_->start();
+    stepper_->prepareDrift();
+    pathTimes_.lap(pathTimes::interpolate);
     updateDrift();
     pathTimes_.lap(pathTimes::locate);
 
@@ -392,6 +394,8 @@ void Foam::polymer::polymerCloud::evolve()
         if (cycle)
         {
             stepper_->start();
+            stepper_->prepareDrift();
+            pathTimes_.lap(pathTimes::interpolate);
             updateDrift();
             pathTimes_.lap(pathTimes::locate);
         }

@@ -63,14 +63,12 @@ Foam::polymer::flowModels::field::field
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::polymer::flowModels::field::update(const polymerChains& chains)
+void Foam::polymer::flowModels::field::prepare(const polymerChains& chains)
 {
     if (chains.positions().empty() && !Pstream::parRun())
     {
         // No interpolation to set up (cellPoint interpolates U to the
         // points): a scene without chains pays nothing
-        beadVelocity_.clear();
-        velocityStart_.clear();
         return;
     }
 
@@ -82,15 +80,33 @@ void Foam::polymer::flowModels::field::update(const polymerChains& chains)
             << "    expected: U <the velocity field's name>; (default U)"
             << exit(FatalIOError);
     }
-    const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
-    autoPtr<interpolation<vector>> interpolator
+    interpolator_ = interpolation<vector>::New
     (
-        interpolation<vector>::New(interpolationScheme_, U)
+        interpolationScheme_,
+        mesh_.lookupObject<volVectorField>(UName_)
     );
+}
 
+
+void Foam::polymer::flowModels::field::update(const polymerChains& chains)
+{
+    if (chains.positions().empty() && !Pstream::parRun())
+    {
+        beadVelocity_.clear();
+        velocityStart_.clear();
+        return;
+    }
+
+    // The interpolation of this step's flow, built now if prepare was not
+    // called since the last update
+    if (!interpolator_.valid())
+    {
+        prepare(chains);
+    }
     sampler_.locate(chains);
     beadVelocity_.setSize(chains.nBeads());
-    sampler_.sample(interpolator(), beadVelocity_);
+    sampler_.sample(interpolator_(), beadVelocity_);
+    interpolator_.clear();
 
     // The corrector's flow: the mean of the step's start and the predicted
     // end (beads injected since have no start value)
