@@ -24,15 +24,16 @@ License
 
 // * * * * * * * * * * * * * * * * Dispatch  * * * * * * * * * * * * * * * //
 
-// On x86-64 the transform is compiled twice, for the baseline (SSE2) and
-// for AVX2 (twice the lanes), and the loader picks the one the processor
-// runs (function multiversioning, GCC 6 and Clang 14 on). Not FMA: fused
-// multiply-adds would change the rounding, where these two give the same
-// bits, so results do not depend on the processor.
+// On x86-64 the transform is compiled three times, for the baseline
+// (SSE2), for AVX2 (twice the lanes) and for AVX-512 (four times), and the
+// loader picks the one the processor runs (function multiversioning, GCC 6
+// and Clang 14 on). Not FMA: fused multiply-adds would change the
+// rounding (and -ffp-contract=off forbids them), where these three give
+// the same bits, so results do not depend on the processor.
 #if defined(__x86_64__) && defined(__has_attribute)
     #if __has_attribute(target_clones)
         #define BOX_MULLER_TARGETS \
-            __attribute__((target_clones("avx2", "default")))
+            __attribute__((target_clones("avx512f", "avx2", "default")))
     #endif
 #endif
 
