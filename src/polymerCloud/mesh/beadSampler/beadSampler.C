@@ -264,8 +264,20 @@ void Foam::polymer::beadSampler::locate(const polymerChains& chains)
     // or in none: no search here. The search starts from the tet that
     // held the bead at the last locate
     const boundBox& bounds = neighbours_.localBounds();
+    const label nBeads = x.size();
     forAll(x, i)
     {
+        // The mesh data of later beads' tets on its way to the cache, in
+        // three stages (each needs the one before in the cache)
+        for (int stage = 0; stage < 3; ++stage)
+        {
+            const label ahead = i + 8*(3 - stage);
+            if (ahead < nBeads)
+            {
+                locator_.prefetch(hostTet[ahead], stage);
+            }
+        }
+
         const point p = periodic_.wrap(x[i]);
         hostTet[i] =
             bounds.contains(p)

@@ -406,4 +406,49 @@ Foam::tetIndices Foam::polymer::cellLocator::findTet
 }
 
 
+void Foam::polymer::cellLocator::prefetch
+(
+    const tetIndices& tet,
+    const int stage
+) const
+{
+#if defined(__GNUC__)
+    const label celli = tet.cell();
+    const label facei = tet.face();
+    if (celli < 0 || facei < 0 || facei >= mesh().nFaces())
+    {
+        return;
+    }
+    const faceList& faces = mesh().faces();
+    if (stage == 0)
+    {
+        __builtin_prefetch(&faces[facei]);
+        __builtin_prefetch(&mesh().tetBasePtIs()[facei]);
+        __builtin_prefetch(&mesh().cellCentres()[celli]);
+        __builtin_prefetch(&mesh().cellVolumes()[celli]);
+    }
+    else if (stage == 1)
+    {
+        __builtin_prefetch(faces[facei].cdata());
+    }
+    else
+    {
+        // The tet's points, as tetIndices::faceTriIs numbers them
+        const face& f = faces[facei];
+        const label n = f.size();
+        const label tetPti = tet.tetPt();
+        if (tetPti < 1 || tetPti > n - 2)
+        {
+            return;
+        }
+        const label base = max(mesh().tetBasePtIs()[facei], label(0));
+        const pointField& points = mesh().points();
+        __builtin_prefetch(&points[f[base]]);
+        __builtin_prefetch(&points[f[(base + tetPti) % n]]);
+        __builtin_prefetch(&points[f[(base + tetPti + 1) % n]]);
+    }
+#endif
+}
+
+
 // ************************************************************************* //
