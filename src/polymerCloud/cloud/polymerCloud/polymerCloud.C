@@ -347,8 +347,12 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
 
 void Foam::polymer::polymerCloud::updateDrift()
 {
+    stepper_->start();
+    stepper_->prepareDrift();
+    pathTimes_.lap(pathTimes::interpolate);
     stepper_->updateDrift();
     stepper_->countBeadsOutside();
+    pathTimes_.lap(pathTimes::locate);
 }
 
 
@@ -379,11 +383,7 @@ void Foam::polymer::polymerCloud::evolve()
 
     injectChains(time);
     pathTimes_.lap(pathTimes::inject);
-    stepper_->start();
-    stepper_->prepareDrift();
-    pathTimes_.lap(pathTimes::interpolate);
     updateDrift();
-    pathTimes_.lap(pathTimes::locate);
 
     // The flow's step in nCycles polymer steps (solution's
     // maxNeighbourDisplacement), each from the fluid velocity and forces
@@ -393,11 +393,7 @@ void Foam::polymer::polymerCloud::evolve()
     {
         if (cycle)
         {
-            stepper_->start();
-            stepper_->prepareDrift();
-            pathTimes_.lap(pathTimes::interpolate);
             updateDrift();
-            pathTimes_.lap(pathTimes::locate);
         }
         stepper_->setSubCycle(nCycles, cycle);
         evolvePolymerStep
