@@ -194,6 +194,7 @@ bool Foam::polymer::contactProjection::checkPaths
     const rodCrossingAudit& audit,
     const boolList& moved,
     const UList<point>& positionsAfter,
+    List<point>& positionsAudited,
     const scalar time
 )
 {
@@ -202,11 +203,28 @@ bool Foam::polymer::contactProjection::checkPaths
         return false;
     }
 
+    // A pass checks only the rods the zones placed since the last pass:
+    // the others' pairs are on the paths checked then
+    const List<point>& x = chains_.positions();
+    boolList rodsToCheck;
+    if (positionsAudited.size())
+    {
+        const List<labelPair>& rods = rods_.rods();
+        rodsToCheck.setSize(rods.size());
+        forAll(rods, rodi)
+        {
+            const label i = rods[rodi].first(), j = rods[rodi].second();
+            rodsToCheck[rodi] =
+                x[i] != positionsAudited[i] || x[j] != positionsAudited[j];
+        }
+    }
+    positionsAudited = x;
+
     // Rods that would cross join one zone; a zone's own rods cannot cross,
     // since it moves rigidly from the step's start
     bool changed = false;
     const List<rodCrossingAudit::crossing> found =
-        audit.check(positionsAfter, chains_.positions());
+        audit.check(positionsAfter, x, rodsToCheck);
     for (const rodCrossingAudit::crossing& crossing : found)
     {
         const label a = chains_.chainOf(crossing.rodA.first());
@@ -417,12 +435,14 @@ void Foam::polymer::contactProjection::project
     rods_.update(chains_);
     const rodCrossingAudit audit(rods_.rods(), lattice_);
     const label maxPasses = 3*chains_.nChains() + 2;
+    List<point> positionsAudited;
     for (label pass = 0; pass < maxPasses; ++pass)
     {
         cpuTime zoneTimer;
         placeZones(wall, positionsStart, positionsAfter, velocitiesAfter);
         counts_.zoneSeconds += zoneTimer.cpuTimeIncrement();
-        const bool changed = checkPaths(audit, moved, positionsAfter, time);
+        const bool changed =
+            checkPaths(audit, moved, positionsAfter, positionsAudited, time);
         counts_.auditSeconds += zoneTimer.cpuTimeIncrement();
         if (!changed)
         {

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "rodCrossingAudit.H"
+#include "rodsFartherThan.H"
 
 #include <algorithm>
 #include <cmath>
@@ -337,7 +338,8 @@ void Foam::polymer::rodCrossingAudit::checkPair
 Foam::List<Foam::polymer::rodCrossingAudit::crossing>
 Foam::polymer::rodCrossingAudit::check
 (
-    const UList<List<point>>& path
+    const UList<List<point>>& path,
+    const boolList& rodsToCheck
 ) const
 {
     // Boxes swept over the whole path
@@ -367,6 +369,22 @@ Foam::polymer::rodCrossingAudit::check
         }
     }
 
+    // How far a point of each rod moves from its first configuration at
+    // most: the sum over the pieces of its beads' larger displacement
+    scalarList reach(rods_.size(), Zero);
+    forAll(rods_, rodi)
+    {
+        const label i = rods_[rodi].first(), j = rods_[rodi].second();
+        for (label k = 0; k + 1 < path.size(); ++k)
+        {
+            reach[rodi] += max
+            (
+                mag(path[k + 1][i] - path[k][i]),
+                mag(path[k + 1][j] - path[k][j])
+            );
+        }
+    }
+
     DynamicList<crossing> found;
     const auto checkIfNear = [&](const label a, const label b)
     {
@@ -378,16 +396,27 @@ Foam::polymer::rodCrossingAudit::check
          && ra.first() != rb.first() && ra.first() != rb.second()
          && ra.second() != rb.first() && ra.second() != rb.second()
          && boxes[a].overlaps(boxes[b])
+         && !rodsFartherThan
+            (
+                path[0][ra.first()], path[0][ra.second()],
+                path[0][rb.first()], path[0][rb.second()],
+                reach[a] + reach[b]
+            )
         )
         {
             checkPair(ra, rb, vector::zero, path, found);
         }
     };
 
-    // Candidates from a grid of the boxes: each pair once
+    // Candidates from a grid of the boxes: each pair once, from its first
+    // rod or from its rod to check
     const boxGrid grid(boxes);
     forAll(rods_, a)
     {
+        if (!rodsToCheck.empty() && !rodsToCheck[a])
+        {
+            continue;
+        }
         grid.forNear
         (
             boxes[a],
@@ -396,6 +425,10 @@ Foam::polymer::rodCrossingAudit::check
                 if (b > a)
                 {
                     checkIfNear(a, b);
+                }
+                else if (!rodsToCheck.empty() && !rodsToCheck[b])
+                {
+                    checkIfNear(b, a);
                 }
             }
         );
@@ -411,7 +444,10 @@ Foam::polymer::rodCrossingAudit::check
     {
         if (all.overlaps(boundBox(all.min() + shift, all.max() + shift)))
         {
-            checkImages(shift, boxes, moves, grid, path, found);
+            checkImages
+            (
+                shift, boxes, moves, reach, rodsToCheck, grid, path, found
+            );
         }
     }
     return List<crossing>(std::move(found));
@@ -423,6 +459,8 @@ void Foam::polymer::rodCrossingAudit::checkImages
     const vector& shift,
     const UList<boundBox>& boxes,
     const boolList& moves,
+    const scalarList& reach,
+    const boolList& rodsToCheck,
     const boxGrid& grid,
     const UList<List<point>>& path,
     DynamicList<crossing>& found
@@ -456,7 +494,19 @@ void Foam::polymer::rodCrossingAudit::checkImages
                 (
                     boxes[b].min() + shift, boxes[b].max() + shift
                 );
-                if (b != a && (moves[a] || moves[b]) && boxA.overlaps(imageB))
+                if
+                (
+                    b != a && (moves[a] || moves[b])
+                 && (rodsToCheck.empty() || rodsToCheck[a] || rodsToCheck[b])
+                 && boxA.overlaps(imageB)
+                 && !rodsFartherThan
+                    (
+                        path[0][rods_[a].first()], path[0][rods_[a].second()],
+                        path[0][rods_[b].first()] + shift,
+                        path[0][rods_[b].second()] + shift,
+                        reach[a] + reach[b]
+                    )
+                )
                 {
                     checkPair(rods_[a], rods_[b], shift, path, found);
                 }
@@ -470,13 +520,14 @@ Foam::List<Foam::polymer::rodCrossingAudit::crossing>
 Foam::polymer::rodCrossingAudit::check
 (
     const UList<point>& start,
-    const UList<point>& end
+    const UList<point>& end,
+    const boolList& rodsToCheck
 ) const
 {
     List<List<point>> path(2);
     path[0] = start;
     path[1] = end;
-    return check(path);
+    return check(path, rodsToCheck);
 }
 
 
