@@ -79,6 +79,9 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     position_(),
     velocity_(),
     beadTime_(),
+    deltaT_(0),
+    drift_(),
+    pairBudget_(),
     grid_(),
     queue_(),
     contacts_(),
@@ -114,10 +117,29 @@ Foam::boundBox Foam::polymer::collisionModels::elasticRods::sweep
 }
 
 
+Foam::scalar Foam::polymer::collisionModels::elasticRods::growMargin
+(
+    const label rod,
+    const scalar t,
+    const scalar dt
+) const
+{
+    // Half the rod's motion over the rest of the step: an event on its
+    // chain changes its path by a part of that
+    const scalar rest = dt - t;
+    return 0.5*rest*max
+    (
+        mag(velocity_[rods_[rod].first()]),
+        mag(velocity_[rods_[rod].second()])
+    );
+}
+
+
 bool Foam::polymer::collisionModels::elasticRods::sweptApart
 (
     const FixedList<point, 4>& x,
-    const FixedList<vector, 4>& moved
+    const FixedList<vector, 4>& moved,
+    scalar& clearance
 )
 {
     const scalar margin = 1e-4*(mag(x[1] - x[0]) + mag(x[3] - x[2]));
@@ -138,6 +160,7 @@ bool Foam::polymer::collisionModels::elasticRods::sweptApart
         const std::pair<scalar, scalar> b = extent(1, d);
         if (a.first > b.second + margin || b.first > a.second + margin)
         {
+            clearance = max(a.first - b.second, b.first - a.second) - margin;
             return true;
         }
     }
@@ -156,6 +179,7 @@ bool Foam::polymer::collisionModels::elasticRods::sweptApart
     point onA, onB;
     const scalar distance =
         linePointRef(x[0], x[1]).nearestDist(linePointRef(x[2], x[3]), onA, onB);
+    clearance = distance - (std::sqrt(closing) + margin);
     return distance > std::sqrt(closing) + margin;
 }
 
@@ -190,10 +214,23 @@ void Foam::polymer::collisionModels::elasticRods::predict
     // place (they accept one with the rods' closest points inside both
     // rods, at an angle of at least 1e-6)
     const scalar rest = dt - t;
-    if (sweptApart(x, {rest*v[0], rest*v[1], rest*v[2], rest*v[3]}))
+    if (label(pairBudget_.size()) <= pairi)
     {
+        pairBudget_.resize(grid_.pairs().size(), -GREAT);
+    }
+    scalar clearance = 0;
+    if
+    (
+        sweptApart
+        (
+            x, {rest*v[0], rest*v[1], rest*v[2], rest*v[3]}, clearance
+        )
+    )
+    {
+        pairBudget_[pairi] = clearance + pairDrift(pairi);
         return;
     }
+    pairBudget_[pairi] = -GREAT;
 
     const rodPairCrossing pair
     (
@@ -294,7 +331,7 @@ void Foam::polymer::collisionModels::elasticRods::repredict
     for (const label rod : rodsToPredict_)
     {
         const boundBox box(sweep(rod, t, dt));
-        grid_.grow(rod, box);
+        grid_.grow(rod, box, growMargin(rod, t, dt));
         if (edges)
         {
             predictEdges(rod, box, t, dt);
@@ -309,8 +346,11 @@ void Foam::polymer::collisionModels::elasticRods::repredict
             const labelPair& pair = grid_.pairs()[pairi];
             if
             (
-                pair.first() == rod
-             || rodStamp_[pair.first()] != repredictions_
+                (
+                    pair.first() == rod
+                 || rodStamp_[pair.first()] != repredictions_
+                )
+             && !stillApart(pairi)
             )
             {
                 predict(pairi, t, dt);
@@ -358,14 +398,15 @@ void Foam::polymer::collisionModels::elasticRods::resolveWall
     }
     changedBeads_.clear();
     changedBeads_.append(bead);
+    vector v(velocity_[bead]);
     wall_->interact
     (
         bead,
         wallModel::impact{e.offset, e.normal, e.patch},
-        velocity_[bead],
+        v,
         velocitiesDagger[bead]
     );
-    queue_.changedCourse(bead);
+    setVelocity(bead, v);
 }
 
 
@@ -434,6 +475,9 @@ void Foam::polymer::collisionModels::elasticRods::correct
     }
     beadTime_.resize(nBeads);
     beadTime_ = 0;
+    deltaT_ = deltaT;
+    drift_.resize(nBeads);
+    drift_ = 0;
 
     // Broad phase: rods whose swept boxes overlap
     List<boundBox> boxes(rods_.size());
@@ -442,6 +486,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
         boxes[rod] = sweep(rod, 0, deltaT);
     }
     grid_.build(rods_, std::move(boxes), lattice_);
+    pairBudget_.assign(grid_.pairs().size(), -GREAT);
 
     queue_.reset(nBeads);
     contacts_.clear();

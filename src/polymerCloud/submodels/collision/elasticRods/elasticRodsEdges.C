@@ -146,9 +146,8 @@ bool Foam::polymer::collisionModels::elasticRods::resolveEdge
     {
         const scalar weight = (bead == b0) ? 1 - lambda : lambda;
         const vector dv = (J*weight/mass)*n;
-        velocity_[bead] += dv;
+        setVelocity(bead, velocity_[bead] + dv);
         velocitiesDagger[bead] += dv;
-        queue_.changedCourse(bead);
         changedBeads_.append(bead);
     }
     return true;

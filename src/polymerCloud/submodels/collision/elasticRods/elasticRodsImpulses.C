@@ -77,9 +77,8 @@ void Foam::polymer::collisionModels::elasticRods::applyResponse
     for (label i = first; i < chains.end(chaini); ++i)
     {
         const vector dv = J*response[i - first];
-        velocity_[i] += dv;
+        setVelocity(i, velocity_[i] + dv);
         velocitiesDagger[i] += dv;
-        queue_.changedCourse(i);
         changedBeads_.append(i);
     }
 }
@@ -324,8 +323,7 @@ bool Foam::polymer::collisionModels::elasticRods::resolve
             continue;
         }
         velocitiesDagger[bead] += after[k] - velocity_[bead];
-        velocity_[bead] = after[k];
-        queue_.changedCourse(bead);
+        setVelocity(bead, after[k]);
     }
 
     contacts_.record(pairi, e.side, e.atContact);

@@ -34,8 +34,7 @@ void Foam::polymer::collisionModels::elasticRods::holdChain
     {
         position_[i] = positionAt(i, t);
         beadTime_[i] = t;
-        velocity_[i] = Zero;
-        queue_.changedCourse(i);
+        setVelocity(i, Zero);
     }
 
     // The chain's rods have new (null) paths: the moving chains' events

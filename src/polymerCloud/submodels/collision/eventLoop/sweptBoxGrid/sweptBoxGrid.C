@@ -472,11 +472,18 @@ void Foam::polymer::sweptBoxGrid::build
 }
 
 
-void Foam::polymer::sweptBoxGrid::grow(const label rod, const boundBox& box)
+void Foam::polymer::sweptBoxGrid::grow
+(
+    const label rod,
+    const boundBox& box,
+    const scalar margin
+)
 {
     if (!box_[rod].contains(box))
     {
-        box_[rod].add(box);
+        const vector fat(vector::uniform(margin));
+        box_[rod].add(box.min() - fat);
+        box_[rod].add(box.max() + fat);
         insert(rod);
     }
 }
