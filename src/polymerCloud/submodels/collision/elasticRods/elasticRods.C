@@ -82,6 +82,7 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     deltaT_(0),
     drift_(),
     pairBudget_(),
+    wallBudget_(),
     grid_(),
     queue_(),
     contacts_(),
@@ -279,11 +280,20 @@ void Foam::polymer::collisionModels::elasticRods::predictWall
     const scalar dt
 )
 {
+    // A path shorter than the walls' clearance meets none (as predict
+    // finds), nor does a path that drifts from it by less than the rest
+    const point x(positionAt(bead, t));
+    const scalar path = (dt - t)*mag(velocity_[bead]);
+    const scalar clearance = wall_->clearance(x);
+    if (path < clearance)
+    {
+        wallBudget_[bead] = clearance - path + drift_[bead];
+        return;
+    }
+    wallBudget_[bead] = -GREAT;
+
     wallModel::impact hit;
-    if
-    (
-        wall_->predict(positionAt(bead, t), velocity_[bead], dt - t, hit)
-    )
+    if (wall_->predict(x, velocity_[bead], dt - t, hit))
     {
         event e;
         e.time = t + hit.time;
@@ -362,7 +372,10 @@ void Foam::polymer::collisionModels::elasticRods::repredict
     {
         for (const label bead : beads)
         {
-            predictWall(bead, t, dt);
+            if (!(drift_[bead] < wallBudget_[bead]))
+            {
+                predictWall(bead, t, dt);
+            }
         }
     }
 }
@@ -478,6 +491,8 @@ void Foam::polymer::collisionModels::elasticRods::correct
     deltaT_ = deltaT;
     drift_.resize(nBeads);
     drift_ = 0;
+    wallBudget_.resize(nBeads);
+    wallBudget_ = -GREAT;
 
     // Broad phase: rods whose swept boxes overlap
     List<boundBox> boxes(rods_.size());

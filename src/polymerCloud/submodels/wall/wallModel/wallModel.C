@@ -122,6 +122,16 @@ const Foam::polymer::boundaryFaces& Foam::polymer::wallModel::faces() const
 }
 
 
+Foam::scalar Foam::polymer::wallModel::faceClearance(const point& x) const
+{
+    if (!clearance_.valid())
+    {
+        clearance_.reset(new wallClearance(faces()));
+    }
+    return clearance_()(periodic_.wrap(x));
+}
+
+
 bool Foam::polymer::wallModel::faceImpact
 (
     const point& x,
@@ -130,20 +140,16 @@ bool Foam::polymer::wallModel::faceImpact
     impact& hit
 ) const
 {
-    // The path is followed at its image inside the mesh, piece by piece
-    // between cyclic faces
-    point start = periodic_.wrap(x);
-    scalar elapsed = 0;
-
-    if (!clearance_.valid())
-    {
-        clearance_.reset(new wallClearance(faces()));
-    }
-    if (T*mag(v) < clearance_()(start))
+    if (T*mag(v) < faceClearance(x))
     {
         // No face within the path's reach: the search would miss
         return false;
     }
+
+    // The path is followed at its image inside the mesh, piece by piece
+    // between cyclic faces
+    point start = periodic_.wrap(x);
+    scalar elapsed = 0;
 
     for (label piece = 0; piece < 64; ++piece)
     {
