@@ -354,34 +354,22 @@ Foam::polymer::rodCrossingAudit::check
         }
     }
 
-    // Rods whose beads stay put along the whole path: a pair of two such
-    // rods keeps its V and cannot cross
+    // Rods whose beads stay put along the whole path (a pair of two such
+    // rods keeps its V and cannot cross), and how far a point of each rod
+    // moves from its first configuration at most: the sum over the pieces
+    // of its beads' larger displacement
     boolList moves(rods_.size(), false);
-    forAll(rods_, rodi)
-    {
-        for (const label bead : {rods_[rodi].first(), rods_[rodi].second()})
-        {
-            for (const List<point>& configuration : path)
-            {
-                moves[rodi] =
-                    moves[rodi] || configuration[bead] != path[0][bead];
-            }
-        }
-    }
-
-    // How far a point of each rod moves from its first configuration at
-    // most: the sum over the pieces of its beads' larger displacement
     scalarList reach(rods_.size(), Zero);
     forAll(rods_, rodi)
     {
         const label i = rods_[rodi].first(), j = rods_[rodi].second();
         for (label k = 0; k + 1 < path.size(); ++k)
         {
-            reach[rodi] += max
-            (
-                mag(path[k + 1][i] - path[k][i]),
-                mag(path[k + 1][j] - path[k][j])
-            );
+            const vector di(path[k + 1][i] - path[k][i]);
+            const vector dj(path[k + 1][j] - path[k][j]);
+            moves[rodi] =
+                moves[rodi] || di != vector::zero || dj != vector::zero;
+            reach[rodi] += max(mag(di), mag(dj));
         }
     }
 
