@@ -24,7 +24,8 @@ Foam::polymer::contactProjection::contactProjection
     const constraintModel& constraint,
     const bool uncrossable,
     const UList<vector>& lattice,
-    const bool wallEdges
+    const bool wallEdges,
+    const label maxContactRounds
 )
 :
     chains_(chains),
@@ -38,6 +39,10 @@ Foam::polymer::contactProjection::contactProjection
       : autoPtr<crossingRootSolver>()
     ),
     rods_(),
+    maxContactRounds_(maxContactRounds),
+    contactSolver_(constraint.lengthTolerance(), 50),
+    contacts_(),
+    contactGroups_(),
     zones_()
 {}
 
@@ -189,22 +194,12 @@ void Foam::polymer::contactProjection::addWallZones
 }
 
 
-bool Foam::polymer::contactProjection::checkPaths
+Foam::boolList Foam::polymer::contactProjection::rodsToAudit
 (
-    const rodCrossingAudit& audit,
-    const boolList& moved,
-    const UList<point>& positionsAfter,
-    List<point>& positionsAudited,
-    const scalar time
-)
+    List<point>& positionsAudited
+) const
 {
-    if (!uncrossable_)
-    {
-        return false;
-    }
-
-    // A pass checks only the rods the zones placed since the last pass:
-    // the others' pairs are on the paths checked then
+    // The other rods' pairs are on the paths the last audit checked
     const List<point>& x = chains_.positions();
     boolList rodsToCheck;
     if (positionsAudited.size())
@@ -219,44 +214,76 @@ bool Foam::polymer::contactProjection::checkPaths
         }
     }
     positionsAudited = x;
+    return rodsToCheck;
+}
 
+
+bool Foam::polymer::contactProjection::mergeCrossing
+(
+    const rodCrossingAudit::crossing& crossing,
+    const boolList& moved,
+    const scalar time
+)
+{
     // Rods that would cross join one zone; a zone's own rods cannot cross,
     // since it moves rigidly from the step's start
-    bool changed = false;
-    const List<rodCrossingAudit::crossing> found =
-        audit.check(positionsAfter, x, rodsToCheck);
-    for (const rodCrossingAudit::crossing& crossing : found)
+    const label a = chains_.chainOf(crossing.rodA.first());
+    const label b = chains_.chainOf(crossing.rodB.first());
+    const bool sameZone = zones_.sameZone(a, b);
+    if
+    (
+        !sameZone
+     && !moved[a] && !moved[b] && !zones_.inZone(a) && !zones_.inZone(b)
+    )
     {
-        const label a = chains_.chainOf(crossing.rodA.first());
-        const label b = chains_.chainOf(crossing.rodB.first());
-        const bool sameZone = zones_.sameZone(a, b);
-        if
-        (
-            !sameZone
-         && !moved[a] && !moved[b] && !zones_.inZone(a) && !zones_.inZone(b)
-        )
+        WarningInFunction
+            << "Audit: rods (beads " << crossing.rodA << ") and ("
+            << crossing.rodB << ") cross at time " << time
+            << " on paths the re-projection did not move" << endl;
+        ++counts_.crossingsLeft;
+        return false;
+    }
+    if (!zones_.merge(a, b, crossing.shift))
+    {
+        // A zone is rigid with one image of each of its chains only: a
+        // zone that meets another image of its own chain (it wraps around
+        // the period) is held at the step's start, where its chains'
+        // images do not move relative to each other
+        if (!zones_.held(a))
         {
-            WarningInFunction
-                << "Audit: rods (beads " << crossing.rodA << ") and ("
-                << crossing.rodB << ") cross at time " << time
-                << " on paths the re-projection did not move" << endl;
-            ++counts_.crossingsLeft;
-            continue;
+            zones_.hold(a);
+            return true;
         }
-        if (!zones_.merge(a, b, crossing.shift))
-        {
-            // A zone is rigid with one image of each of its chains only: a
-            // zone that meets another image of its own chain (it wraps
-            // around the period) is held at the step's start, where its
-            // chains' images do not move relative to each other
-            if (!zones_.held(a))
-            {
-                zones_.hold(a);
-                changed = true;
-            }
-            continue;
-        }
-        changed = changed || !sameZone;
+        return false;
+    }
+    return !sameZone;
+}
+
+
+bool Foam::polymer::contactProjection::checkPaths
+(
+    const rodCrossingAudit& audit,
+    const boolList& moved,
+    const UList<point>& positionsAfter,
+    List<point>& positionsAudited,
+    const scalar time
+)
+{
+    if (!uncrossable_)
+    {
+        return false;
+    }
+
+    // A pass checks only the rods the zones placed since the last pass
+    const boolList rodsToCheck(rodsToAudit(positionsAudited));
+    bool changed = false;
+    for
+    (
+        const rodCrossingAudit::crossing& crossing
+      : audit.check(positionsAfter, chains_.positions(), rodsToCheck)
+    )
+    {
+        changed = mergeCrossing(crossing, moved, time) || changed;
     }
     return changed;
 }
@@ -434,8 +461,20 @@ void Foam::polymer::contactProjection::project
 
     rods_.update(chains_);
     const rodCrossingAudit audit(rods_.rods(), lattice_);
-    const label maxPasses = 3*chains_.nChains() + 2;
     List<point> positionsAudited;
+    if (uncrossable_ && maxContactRounds_ > 0)
+    {
+        // Zones so far (failed projections, wall paths) placed first: the
+        // contact rounds' audits see them where the zones put them
+        placeZones(wall, positionsStart, positionsAfter, velocitiesAfter);
+        resolveContacts
+        (
+            audit, moved, wall, positionsAfter, velocitiesAfter,
+            positionsAudited, time
+        );
+    }
+
+    const label maxPasses = 3*chains_.nChains() + 2;
     for (label pass = 0; pass < maxPasses; ++pass)
     {
         cpuTime zoneTimer;
@@ -491,6 +530,12 @@ Foam::polymer::contactProjection::runCounts::reduced() const
     reduction.sum(all.zoneSeconds);
     reduction.sum(all.auditSeconds);
     reduction.sum(all.crossingsLeft);
+    reduction.sum(all.contactGroups);
+    reduction.sum(all.contactChainSteps);
+    reduction.sum(all.contactsHeld);
+    reduction.sum(all.groupSolves);
+    reduction.sum(all.groupFailures);
+    reduction.sum(all.contactSeconds);
     reduction.reduce();
     return all;
 }
@@ -514,7 +559,13 @@ void Foam::polymer::contactProjection::writeReport(Ostream& os) const
         << scalar(all.wrappedChainSteps)
         << "; CPU " << all.seconds
         << " s (placing zones " << all.zoneSeconds
-        << " s, auditing the paths " << all.auditSeconds << " s)" << nl;
+        << " s, auditing the paths " << all.auditSeconds << " s)" << nl
+        << "    contact constraints before the zones: groups "
+        << scalar(all.contactGroups) << " of " << scalar(all.contactChainSteps)
+        << " chain-steps held apart by " << scalar(all.contactsHeld)
+        << " contacts; group solves " << scalar(all.groupSolves)
+        << ", failed (made zones) " << scalar(all.groupFailures)
+        << "; CPU " << all.contactSeconds << " s" << nl;
 }
 
 
@@ -532,6 +583,11 @@ void Foam::polymer::contactProjection::writeRunTotals(dictionary& dict) const
     runTotals::add(totals, "zonesFormed", all.zonesFormed);
     runTotals::add(totals, "crossingsLeft", all.crossingsLeft);
     runTotals::add(totals, "energyRemoved", all.energyRemoved);
+    runTotals::add(totals, "contactGroups", all.contactGroups);
+    runTotals::add(totals, "contactChainSteps", all.contactChainSteps);
+    runTotals::add(totals, "contactsHeld", all.contactsHeld);
+    runTotals::add(totals, "groupSolves", all.groupSolves);
+    runTotals::add(totals, "groupFailures", all.groupFailures);
 }
 
 
@@ -552,6 +608,11 @@ void Foam::polymer::contactProjection::readRunTotals(const dictionary& dict)
     runTotals::read(*saved, "zonesFormed", counts_.zonesFormed);
     runTotals::read(*saved, "crossingsLeft", counts_.crossingsLeft);
     runTotals::read(*saved, "energyRemoved", counts_.energyRemoved);
+    runTotals::read(*saved, "contactGroups", counts_.contactGroups);
+    runTotals::read(*saved, "contactChainSteps", counts_.contactChainSteps);
+    runTotals::read(*saved, "contactsHeld", counts_.contactsHeld);
+    runTotals::read(*saved, "groupSolves", counts_.groupSolves);
+    runTotals::read(*saved, "groupFailures", counts_.groupFailures);
 }
 
 

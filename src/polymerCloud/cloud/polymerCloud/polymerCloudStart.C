@@ -279,7 +279,8 @@ void Foam::polymer::polymerCloud::selectModels(const dictionary& subModels)
                 constraint_(),
                 collision_->uncrossable(),
                 periodic_.lattice(),
-                collision_->meetsWallEdges()
+                collision_->meetsWallEdges(),
+                solution_.maxContactRounds()
             )
         );
     }

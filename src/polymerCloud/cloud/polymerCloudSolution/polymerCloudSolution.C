@@ -91,6 +91,18 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
             contactTreatmentNames,
             contactTreatmentType::reproject
         )
+    ),
+    maxContactRounds_
+    (
+        checkedInput::labelAtLeastOrDefault
+        (
+            properties.optionalSubDict("solution"),
+            "maxContactRounds",
+            4,
+            0,
+            "<most rounds of contact constraints before rigid impact zones,"
+            " a whole number; 0: zones at once>"
+        )
     )
 {}
 
