@@ -31,6 +31,16 @@ Foam::polymer::collisionModels::elasticRods::impulseTypeNames
     { impulseType::constrained, "constrained" },
 });
 
+const Foam::Enum
+<
+    Foam::polymer::collisionModels::elasticRods::velocityImpulseType
+>
+Foam::polymer::collisionModels::elasticRods::velocityImpulseTypeNames
+({
+    { velocityImpulseType::pathChange, "pathChange" },
+    { velocityImpulseType::elastic, "elastic" },
+});
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -72,6 +82,16 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
         checkedInput::enumOrDefault
         (
             coeffDict_, "impulse", impulseTypeNames, impulseType::constrained
+        )
+    ),
+    velocityImpulse_
+    (
+        checkedInput::enumOrDefault
+        (
+            coeffDict_, "velocityImpulse", velocityImpulseTypeNames,
+            impulse_ == impulseType::constrained
+          ? velocityImpulseType::elastic
+          : velocityImpulseType::pathChange
         )
     ),
     wallEdges_(coeffDict_.getOrDefault<bool>("wallEdges", true)),

@@ -64,11 +64,28 @@ bool Foam::polymer::collisionModels::elasticRods::chainResponse
 }
 
 
+Foam::scalar Foam::polymer::collisionModels::elasticRods::velocityImpulse
+(
+    const scalar J,
+    const scalar u,
+    const scalar uDagger,
+    const scalar perUnit
+) const
+{
+    if (velocityImpulse_ == velocityImpulseType::pathChange)
+    {
+        return J;
+    }
+    return (uDagger*u > 0) ? -2*uDagger/perUnit : 0;
+}
+
+
 void Foam::polymer::collisionModels::elasticRods::applyResponse
 (
     const polymerChains& chains,
     const label chaini,
     const scalar J,
+    const scalar JDagger,
     const UList<vector>& response,
     UList<vector>& velocitiesDagger
 )
@@ -76,9 +93,8 @@ void Foam::polymer::collisionModels::elasticRods::applyResponse
     const label first = chains.start(chaini);
     for (label i = first; i < chains.end(chaini); ++i)
     {
-        const vector dv = J*response[i - first];
-        setVelocity(i, velocity_[i] + dv);
-        velocitiesDagger[i] += dv;
+        setVelocity(i, velocity_[i] + J*response[i - first]);
+        velocitiesDagger[i] += JDagger*response[i - first];
         changedBeads_.append(i);
     }
 }
@@ -158,7 +174,7 @@ bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
     // The contact's relative normal velocity u and its change per unit J
     // (at most the free beads' sum w^2/m; a contact the chains' rods all
     // but lock, as within a short ring, takes the dumbbell impulse)
-    scalar u = 0, contactResponse = 0, freeResponse = 0;
+    scalar u = 0, uDagger = 0, contactResponse = 0, freeResponse = 0;
     for (label k = 0; k < 4; ++k)
     {
         const label c = (k < 2) ? chainI : chainJ;
@@ -167,6 +183,8 @@ bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
         contactResponse += weights[k]*(r[beads[k] - chains.start(c)] & n);
         if (c == chainI ? !heldI : !heldJ)
         {
+            // A held chain is an immovable obstacle, whatever its v-dagger
+            uDagger += weights[k]*(velocitiesDagger[beads[k]] & n);
             freeResponse += sqr(weights[k])/chains.type(c).beadMass();
         }
     }
@@ -176,14 +194,21 @@ bool Foam::polymer::collisionModels::elasticRods::resolveConstrained
     }
 
     const scalar J = -2*u/contactResponse;
+    const scalar JDagger = velocityImpulse(J, u, uDagger, contactResponse);
     changedBeads_.clear();
     if (!heldI)
     {
-        applyResponse(chains, chainI, J, responseI, velocitiesDagger);
+        applyResponse
+        (
+            chains, chainI, J, JDagger, responseI, velocitiesDagger
+        );
     }
     if (chainJ != chainI && !heldJ)
     {
-        applyResponse(chains, chainJ, J, responseJ, velocitiesDagger);
+        applyResponse
+        (
+            chains, chainJ, J, JDagger, responseJ, velocitiesDagger
+        );
     }
     return true;
 }
@@ -212,11 +237,12 @@ bool Foam::polymer::collisionModels::elasticRods::reverseThroughChain
 
     // The contact's normal velocity u and its change per unit impulse
     const label first = chains.start(c);
-    vector contactVelocity(Zero);
+    vector contactVelocity(Zero), contactVelocityDagger(Zero);
     scalar perUnit = 0, freeResponse = 0;
     forAll(beads, k)
     {
         contactVelocity += weights[k]*velocity_[beads[k]];
+        contactVelocityDagger += weights[k]*velocitiesDagger[beads[k]];
         perUnit += weights[k]*(response[beads[k] - first] & n);
         freeResponse += sqr(weights[k]);
     }
@@ -225,8 +251,14 @@ bool Foam::polymer::collisionModels::elasticRods::reverseThroughChain
     {
         return false;
     }
+    const scalar J = -2*u/perUnit;
     changedBeads_.clear();
-    applyResponse(chains, c, -2*u/perUnit, response, velocitiesDagger);
+    applyResponse
+    (
+        chains, c, J,
+        velocityImpulse(J, u, contactVelocityDagger & n, perUnit),
+        response, velocitiesDagger
+    );
     return true;
 }
 
