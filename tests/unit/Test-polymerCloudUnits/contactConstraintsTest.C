@@ -22,7 +22,11 @@ Description
     - a contact given twice gives the solution of the contact given once
       (the least-norm solution of the contacts' rank-deficient system);
       one pair held at two gaps has no solution: the solve fails and
-      leaves the positions at the start.
+      leaves the positions at the start;
+    - a contact set where two rods cross on their paths has the normal of
+      the rods' plane there, turned from A to B at the start, the weights
+      of the crossing point and the start's gap, which the projection
+      holds; rods parallel at the crossing give none.
 \*---------------------------------------------------------------------------*/
 
 #include "testHelpers.H"
@@ -315,6 +319,64 @@ TEST(contactConstraints, RepeatedAndContradictoryContacts)
     {
         EXPECT_EQ(chains.positions()[i], start[i]);
     }
+}
+
+
+TEST(contactConstraints, ContactWhereTheRodsCross)
+{
+    // Rod A along x through the origin; rod B along y, 0.1 above it, moves
+    // to 0.1 below it: they cross at half the path, at A's middle and at
+    // B's quarter
+    PtrList<chainType> types(oneType(2, 1, 1, 1, 1));
+    polymerChains chains(types);
+    chains.append(0, 0, List<point>({{-0.5, 0, 0}, {0.5, 0, 0}}),
+        List<vector>(2, Zero));
+    chains.append(0, 1, List<point>({{0, -0.25, 0.1}, {0, 0.75, 0.1}}),
+        List<vector>(2, Zero));
+    const List<point> from(chains.positions());
+    List<point> to(from);
+    to[2].z() = -0.1;
+    to[3].z() = -0.1;
+
+    contactConstraints::contact contact;
+    ASSERT_TRUE
+    (
+        contactConstraints::makeCrossingContact
+        (
+            labelPair(0, 1), labelPair(2, 3), Zero, chains, from, to, 0.5,
+            contact
+        )
+    );
+    EXPECT_NEAR(mag(contact.normal - vector(0, 0, 1)), 0, 1e-15);
+    EXPECT_NEAR(contact.gap, 0.1, 1e-15);
+    EXPECT_NEAR(contact.weights[0], -0.5, 1e-15);
+    EXPECT_NEAR(contact.weights[1], -0.5, 1e-15);
+    EXPECT_NEAR(contact.weights[2], 0.75, 1e-15);
+    EXPECT_NEAR(contact.weights[3], 0.25, 1e-15);
+
+    // Held from the crossing configuration: B stays 0.1 above A
+    chains.positions() = to;
+    contactConstraints solver(tolerance, 50);
+    const List<contactConstraints::contact> one({contact});
+    ASSERT_GE(solver.project(chains, labelList({0, 1}), one, to), 1);
+    EXPECT_LE(gapError(contact, chains.positions()), tolerance);
+    EXPECT_LE(chains.maxRodLengthError(), tolerance);
+
+    // Rods parallel at the crossing have no plane: no contact
+    List<point> parallel(to);
+    parallel[2] = point(-0.5, 0, -0.1);
+    parallel[3] = point(0.5, 0, -0.1);
+    List<point> parallelFrom(from);
+    parallelFrom[2] = point(-0.5, 0, 0.1);
+    parallelFrom[3] = point(0.5, 0, 0.1);
+    EXPECT_FALSE
+    (
+        contactConstraints::makeCrossingContact
+        (
+            labelPair(0, 1), labelPair(2, 3), Zero, chains, parallelFrom,
+            parallel, 0.5, contact
+        )
+    );
 }
 
 

@@ -395,9 +395,9 @@ bool Foam::polymer::contactConstraints::makeContact
     }
 
     const scalar s =
-        min(max(((onA - a0) & (a1 - a0))/magSqr(a1 - a0), 0), 1);
+        min(max(((onA - a0) & (a1 - a0))/magSqr(a1 - a0), scalar(0)), scalar(1));
     const scalar u =
-        min(max(((onB - b0) & (b1 - b0))/magSqr(b1 - b0), 0), 1);
+        min(max(((onB - b0) & (b1 - b0))/magSqr(b1 - b0), scalar(0)), scalar(1));
 
     result.rodA = rodA;
     result.rodB = rodB;
@@ -414,6 +414,65 @@ bool Foam::polymer::contactConstraints::makeContact
     }
     result.gap = result.normal & weighted;
     return true;
+}
+
+
+bool Foam::polymer::contactConstraints::makeCrossingContact
+(
+    const labelPair& rodA,
+    const labelPair& rodB,
+    const vector& shift,
+    const polymerChains& chains,
+    const UList<point>& from,
+    const UList<point>& to,
+    const scalar fraction,
+    contact& result
+)
+{
+    const auto at = [&](const label i, const vector& translation)
+    {
+        return from[i] + fraction*(to[i] - from[i]) + translation;
+    };
+    const point a0 = at(rodA.first(), Zero), a1 = at(rodA.second(), Zero);
+    const point b0 = at(rodB.first(), shift), b1 = at(rodB.second(), shift);
+
+    point onA, onB;
+    linePointRef(a0, a1).nearestDist(linePointRef(b0, b1), onA, onB);
+    const scalar s =
+        min(max(((onA - a0) & (a1 - a0))/magSqr(a1 - a0), scalar(0)), scalar(1));
+    const scalar u =
+        min(max(((onB - b0) & (b1 - b0))/magSqr(b1 - b0), scalar(0)), scalar(1));
+
+    vector normal = (a1 - a0) ^ (b1 - b0);
+    const scalar rodLength =
+        chains.type(chains.chainOf(rodA.first())).rodLength();
+    if (!(mag(normal) > 1e-6*sqr(rodLength)))
+    {
+        return false;
+    }
+    normal /= mag(normal);
+
+    result.rodA = rodA;
+    result.rodB = rodB;
+    result.shift = shift;
+    result.weights = {-(1 - s), -s, 1 - u, u};
+    const FixedList<label, 4> beads(result.beads());
+    vector weighted(shift);
+    forAll(beads, b)
+    {
+        result.inverseMasses[b] =
+            1/chains.type(chains.chainOf(beads[b])).beadMass();
+        weighted += result.weights[b]*from[beads[b]];
+    }
+    scalar gap = normal & weighted;
+    if (gap < 0)
+    {
+        normal = -normal;
+        gap = -gap;
+    }
+    result.normal = normal;
+    result.gap = gap;
+    return gap > 1e-10*rodLength;
 }
 
 

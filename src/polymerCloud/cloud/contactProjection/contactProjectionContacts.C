@@ -46,31 +46,38 @@ bool Foam::polymer::contactProjection::addContact
     }
 
     // A pair that crosses again with its contact held crosses elsewhere
-    // along the rods: a zone takes it
-    for (const contactConstraints::contact& held : contacts_)
+    // along the rods: its next contact is where they cross, and a pair
+    // that crosses a third time takes a zone
+    label held = 0;
+    for (const contactConstraints::contact& other : contacts_)
     {
-        if
-        (
-            (held.rodA == crossing.rodA && held.rodB == crossing.rodB)
-         || (held.rodA == crossing.rodB && held.rodB == crossing.rodA)
-        )
-        {
-            return false;
-        }
+        held +=
+            (other.rodA == crossing.rodA && other.rodB == crossing.rodB)
+         || (other.rodA == crossing.rodB && other.rodB == crossing.rodA);
+    }
+    if (held >= 2)
+    {
+        return false;
     }
 
     // Rod A the first by global position (chain's global id, bead in the
     // chain), whatever the processor's order: the same bits in parallel
     const bool swap = rodKey(crossing.rodB) < rodKey(crossing.rodA);
+    const labelPair& rodA = swap ? crossing.rodB : crossing.rodA;
+    const labelPair& rodB = swap ? crossing.rodA : crossing.rodB;
+    const vector shift = swap ? -crossing.shift : crossing.shift;
     contactConstraints::contact added;
     if
     (
-        !contactConstraints::makeContact
+        held
+      ? !contactConstraints::makeCrossingContact
         (
-            swap ? crossing.rodB : crossing.rodA,
-            swap ? crossing.rodA : crossing.rodB,
-            swap ? -crossing.shift : crossing.shift,
-            chains_, positionsAfter, added
+            rodA, rodB, shift, chains_, positionsAfter, chains_.positions(),
+            crossing.fraction, added
+        )
+      : !contactConstraints::makeContact
+        (
+            rodA, rodB, shift, chains_, positionsAfter, added
         )
     )
     {

@@ -139,15 +139,18 @@ bool Foam::polymer::collisionModels::elasticRods::resolveEdge
     }
 
     const scalar u = ((1 - lambda)*velocity_[b0] + lambda*velocity_[b1]) & n;
+    const scalar uDagger =
+        ((1 - lambda)*velocitiesDagger[b0] + lambda*velocitiesDagger[b1]) & n;
     const scalar mass = chains.type(chains.chainOf(b0)).beadMass();
-    const scalar J = -2*u/((sqr(1 - lambda) + sqr(lambda))/mass);
+    const scalar perUnit = (sqr(1 - lambda) + sqr(lambda))/mass;
+    const scalar J = -2*u/perUnit;
+    const scalar JDagger = velocityImpulse(J, u, uDagger, perUnit);
     changedBeads_.clear();
     for (const label bead : {b0, b1})
     {
         const scalar weight = (bead == b0) ? 1 - lambda : lambda;
-        const vector dv = (J*weight/mass)*n;
-        setVelocity(bead, velocity_[bead] + dv);
-        velocitiesDagger[bead] += dv;
+        setVelocity(bead, velocity_[bead] + (J*weight/mass)*n);
+        velocitiesDagger[bead] += (JDagger*weight/mass)*n;
         changedBeads_.append(bead);
     }
     return true;

@@ -347,6 +347,28 @@ bool Foam::polymer::collisionModels::elasticRods::resolve
         return false;
     }
 
+    // The velocities' impulse on the four beads: the paths' change (the
+    // paper's 3g, to the bit as before) or their own (a held chain an
+    // immovable obstacle)
+    FixedList<scalar, 4> weights, inverseMasses;
+    scalar lambdaI, lambdaJ;
+    vector n;
+    pair.contact(0, lambdaI, lambdaJ, n);
+    weights = {1 - lambdaI, lambdaI, lambdaJ - 1, -lambdaJ};
+    scalar u = 0, uDagger = 0, perUnit = 0;
+    for (label k = 0; k < 4; ++k)
+    {
+        const bool held = (k < 2 ? heldI : heldJ);
+        inverseMasses[k] =
+            held ? 0 : 1/chains.type(k < 2 ? chainI : chainJ).beadMass();
+        u += weights[k]*(velocity_[beads[k]] & n);
+        uDagger +=
+            held ? 0 : weights[k]*(velocitiesDagger[beads[k]] & n);
+        perUnit += sqr(weights[k])*inverseMasses[k];
+    }
+    const scalar JDagger =
+        velocityImpulse(-2*u/perUnit, u, uDagger, perUnit);
+
     for (label k = 0; k < 4; ++k)
     {
         const label bead = beads[k];
@@ -354,7 +376,10 @@ bool Foam::polymer::collisionModels::elasticRods::resolve
         {
             continue;
         }
-        velocitiesDagger[bead] += after[k] - velocity_[bead];
+        velocitiesDagger[bead] +=
+            (velocityImpulse_ == velocityImpulseType::pathChange)
+          ? after[k] - velocity_[bead]
+          : (JDagger*weights[k]*inverseMasses[k])*n;
         setVelocity(bead, after[k]);
     }
 
