@@ -26,7 +26,11 @@ Description
     - a contact set where two rods cross on their paths has the normal of
       the rods' plane there, turned from A to B at the start, the weights
       of the crossing point and the start's gap, which the projection
-      holds; rods parallel at the crossing give none.
+      holds; rods parallel at the crossing give none;
+    - a bead held off a wall keeps its start distance from the wall's
+      tangent plane, a rod held off a convex edge its nearest point's
+      distance from the edge, with the rods exact; a bead or rod that
+      starts on the plane or the edge gives no contact.
 \*---------------------------------------------------------------------------*/
 
 #include "testHelpers.H"
@@ -375,6 +379,79 @@ TEST(contactConstraints, ContactWhereTheRodsCross)
         (
             labelPair(0, 1), labelPair(2, 3), Zero, chains, parallelFrom,
             parallel, 0.5, contact
+        )
+    );
+}
+
+
+TEST(contactConstraints, ABeadAndARodHeldOffAWall)
+{
+    // A chain of 6 beads along x, 0.2 above the wall z = 0, its beads
+    // moved down by up to 0.3 (rods off): bead 2's path meets the wall at
+    // (2, 0, 0); rod 3-4 passes an edge along y at x = 3.5, z = 0.1
+    PtrList<chainType> types(oneType(6, 1, 1, 1, 1));
+    polymerChains chains(types);
+    List<point> from(6);
+    forAll(from, i)
+    {
+        from[i] = point(i, 0, 0.2);
+    }
+    chains.append(0, 0, from, List<vector>(6, Zero));
+    List<point> to(from);
+    to[2].z() = -0.1;
+    to[3].z() = 0.05;
+    to[4].z() = 0.0;
+
+    contactConstraints::contact atWall, atEdge;
+    ASSERT_TRUE
+    (
+        contactConstraints::makeWallContact
+        (
+            2, point(2, 0, 0), vector(0, 0, 1), chains, from, atWall
+        )
+    );
+    EXPECT_TRUE(contactConstraints::isWallContact(atWall));
+    EXPECT_NEAR(atWall.gap, 0.2, 1e-15);
+    ASSERT_TRUE
+    (
+        contactConstraints::makeEdgeContact
+        (
+            labelPair(3, 4), point(3.5, -1, 0.1), point(3.5, 1, 0.1),
+            chains, from, atEdge
+        )
+    );
+    EXPECT_TRUE(contactConstraints::isWallContact(atEdge));
+    EXPECT_NEAR(mag(atEdge.normal - vector(0, 0, 1)), 0, 1e-15);
+    EXPECT_NEAR(atEdge.gap, 0.1, 1e-15);
+    EXPECT_NEAR(atEdge.weights[2], 0.5, 1e-15);
+    EXPECT_NEAR(atEdge.weights[3], 0.5, 1e-15);
+
+    // Projected from the moved beads: bead 2 keeps 0.2 from the wall's
+    // plane, rod 3-4's middle 0.1 above the edge, rods exact
+    chains.positions() = to;
+    const List<contactConstraints::contact> both({atWall, atEdge});
+    contactConstraints solver(tolerance, 50);
+    ASSERT_GE(solver.project(chains, labelList({0}), both, to), 1);
+    const List<point>& x = chains.positions();
+    EXPECT_NEAR(x[2].z(), 0.2, tolerance);
+    EXPECT_NEAR(0.5*(x[3].z() + x[4].z()), 0.2, tolerance);
+    EXPECT_LE(chains.maxRodLengthError(), tolerance);
+
+    // A bead on the wall's plane at the start, or a rod on the edge, gives
+    // none
+    EXPECT_FALSE
+    (
+        contactConstraints::makeWallContact
+        (
+            2, point(2, 0, 0.2), vector(0, 0, 1), chains, from, atWall
+        )
+    );
+    EXPECT_FALSE
+    (
+        contactConstraints::makeEdgeContact
+        (
+            labelPair(3, 4), point(3.5, -1, 0.2), point(3.5, 1, 0.2),
+            chains, from, atEdge
         )
     );
 }

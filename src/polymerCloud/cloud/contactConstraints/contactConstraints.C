@@ -476,6 +476,67 @@ bool Foam::polymer::contactConstraints::makeCrossingContact
 }
 
 
+bool Foam::polymer::contactConstraints::makeWallContact
+(
+    const label bead,
+    const point& hit,
+    const vector& normal,
+    const polymerChains& chains,
+    const UList<point>& from,
+    contact& result
+)
+{
+    const chainType& type = chains.type(chains.chainOf(bead));
+    result.rodA = labelPair(bead, bead);
+    result.rodB = labelPair(bead, bead);
+    result.shift = -hit;
+    result.weights = {0, 0, 1, 0};
+    result.inverseMasses = 1/type.beadMass();
+    result.normal = normal;
+    result.gap = normal & (from[bead] - hit);
+    return result.gap > 1e-10*type.rodLength();
+}
+
+
+bool Foam::polymer::contactConstraints::makeEdgeContact
+(
+    const labelPair& rod,
+    const point& edgeStart,
+    const point& edgeEnd,
+    const polymerChains& chains,
+    const UList<point>& from,
+    contact& result
+)
+{
+    const point& b0 = from[rod.first()];
+    const point& b1 = from[rod.second()];
+    point onEdge, onRod;
+    linePointRef(edgeStart, edgeEnd).nearestDist
+    (
+        linePointRef(b0, b1), onEdge, onRod
+    );
+    const vector separation = onRod - onEdge;
+    const scalar distance = mag(separation);
+    const chainType& type = chains.type(chains.chainOf(rod.first()));
+    if (!(distance > 1e-10*type.rodLength()))
+    {
+        return false;
+    }
+    const scalar u =
+        min(max(((onRod - b0) & (b1 - b0))/magSqr(b1 - b0), scalar(0)), scalar(1));
+
+    result.rodA = rod;
+    result.rodB = rod;
+    result.shift = -onEdge;
+    result.weights = {0, 0, 1 - u, u};
+    result.inverseMasses = 1/type.beadMass();
+    result.normal = separation/distance;
+    result.gap =
+        result.normal & ((1 - u)*b0 + u*b1 - onEdge);
+    return true;
+}
+
+
 Foam::label Foam::polymer::contactConstraints::project
 (
     polymerChains& chains,

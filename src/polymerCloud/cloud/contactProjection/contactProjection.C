@@ -457,12 +457,17 @@ void Foam::polymer::contactProjection::project
         }
     }
 
-    addWallZones(wall, moved, positionsAfter);
+    const bool contactRounds =
+        maxContactRounds_ > 0 && (uncrossable_ || (wall && wall->active()));
+    if (!contactRounds)
+    {
+        addWallZones(wall, moved, positionsAfter);
+    }
 
     rods_.update(chains_);
     const rodCrossingAudit audit(rods_.rods(), lattice_);
     List<point> positionsAudited;
-    if (uncrossable_ && maxContactRounds_ > 0)
+    if (contactRounds)
     {
         // Zones so far (failed projections, wall paths) placed first: the
         // contact rounds' audits see them where the zones put them
@@ -533,6 +538,7 @@ Foam::polymer::contactProjection::runCounts::reduced() const
     reduction.sum(all.contactGroups);
     reduction.sum(all.contactChainSteps);
     reduction.sum(all.contactsHeld);
+    reduction.sum(all.wallContactsHeld);
     reduction.sum(all.groupSolves);
     reduction.sum(all.groupFailures);
     reduction.sum(all.contactSeconds);
@@ -563,7 +569,9 @@ void Foam::polymer::contactProjection::writeReport(Ostream& os) const
         << "    contact constraints before the zones: groups "
         << scalar(all.contactGroups) << " of " << scalar(all.contactChainSteps)
         << " chain-steps held apart by " << scalar(all.contactsHeld)
-        << " contacts; group solves " << scalar(all.groupSolves)
+        << " contacts (" << scalar(all.wallContactsHeld)
+        << " of them with a wall: a bead's, or a rod's with an edge);"
+        << " group solves " << scalar(all.groupSolves)
         << ", failed (made zones) " << scalar(all.groupFailures)
         << "; CPU " << all.contactSeconds << " s" << nl;
 }
@@ -586,6 +594,7 @@ void Foam::polymer::contactProjection::writeRunTotals(dictionary& dict) const
     runTotals::add(totals, "contactGroups", all.contactGroups);
     runTotals::add(totals, "contactChainSteps", all.contactChainSteps);
     runTotals::add(totals, "contactsHeld", all.contactsHeld);
+    runTotals::add(totals, "wallContactsHeld", all.wallContactsHeld);
     runTotals::add(totals, "groupSolves", all.groupSolves);
     runTotals::add(totals, "groupFailures", all.groupFailures);
 }
@@ -611,6 +620,7 @@ void Foam::polymer::contactProjection::readRunTotals(const dictionary& dict)
     runTotals::read(*saved, "contactGroups", counts_.contactGroups);
     runTotals::read(*saved, "contactChainSteps", counts_.contactChainSteps);
     runTotals::read(*saved, "contactsHeld", counts_.contactsHeld);
+    runTotals::read(*saved, "wallContactsHeld", counts_.wallContactsHeld);
     runTotals::read(*saved, "groupSolves", counts_.groupSolves);
     runTotals::read(*saved, "groupFailures", counts_.groupFailures);
 }

@@ -16,6 +16,7 @@ Description
 
 #include "contactProjection.H"
 #include "cpuTime.H"
+#include "rodPairCrossing.H"
 
 #include <algorithm>
 
@@ -89,14 +90,159 @@ bool Foam::polymer::contactProjection::addContact
 }
 
 
+bool Foam::polymer::contactProjection::addEdgeContacts
+(
+    const wallModel& wall,
+    const label chaini,
+    const UList<point>& positionsAfter,
+    const bool lastRound,
+    bool& added
+)
+{
+    const wallEdges& edges = wall.edges();
+    const List<point>& x = chains_.positions();
+    const label start = chains_.start(chaini);
+    const label end = chains_.end(chaini);
+    const bool ring = chains_.type(chaini).ring();
+    for (label i = start; i < (ring ? end : end - 1); ++i)
+    {
+        const label j = (i + 1 < end) ? i + 1 : start;
+        const point& from0 = positionsAfter[i];
+        const point& from1 = positionsAfter[j];
+
+        // The rod's path at its image inside the mesh
+        const vector shift = wall.imageShift(0.5*(from0 + from1));
+        boundBox box(from0);
+        box.add(from1);
+        box.add(x[i]);
+        box.add(x[j]);
+        for
+        (
+            const label edgei
+          : edges.near(boundBox(box.min() + shift, box.max() + shift))
+        )
+        {
+            const rodPairCrossing pair
+            (
+                from0 + shift, from1 + shift,
+                edges.start(edgei), edges.end(edgei),
+                x[i] - from0, x[j] - from1, Zero, Zero
+            );
+            if (edgeRootSolver_->earliestCrossing(pair, 1) < 0)
+            {
+                continue;
+            }
+
+            // A rod that meets the walls again with its contacts held: a
+            // second contact, a zone at the third meeting
+            const labelPair rod(i, j);
+            label held = 0;
+            for (const contactConstraints::contact& other : contacts_)
+            {
+                held += (other.rodA == rod && other.rodB == rod);
+            }
+            contactConstraints::contact atEdge;
+            if
+            (
+                lastRound || held >= 2
+             || !contactConstraints::makeEdgeContact
+                (
+                    rod, edges.start(edgei) - shift, edges.end(edgei) - shift,
+                    chains_, positionsAfter, atEdge
+                )
+            )
+            {
+                return false;
+            }
+            contacts_.append(atEdge);
+            added = true;
+        }
+    }
+    return true;
+}
+
+
+bool Foam::polymer::contactProjection::addWallContacts
+(
+    const wallModel& wall,
+    const boolList& chainsToCheck,
+    const UList<point>& positionsAfter,
+    const bool lastRound
+)
+{
+    const List<point>& x = chains_.positions();
+    const bool edges = wallEdges_ && wall.edges().size();
+    bool added = false;
+    forAll(chainsToCheck, c)
+    {
+        if (!chainsToCheck[c] || zones_.inZone(c))
+        {
+            continue;
+        }
+        bool edgeAdded = false;
+        if
+        (
+            edges
+         && !addEdgeContacts(wall, c, positionsAfter, lastRound, edgeAdded)
+        )
+        {
+            zones_.add(c);
+            continue;
+        }
+        if (edgeAdded)
+        {
+            contactGroups_.add(c);
+            added = true;
+        }
+        for (label i = chains_.start(c); i < chains_.end(c); ++i)
+        {
+            const vector path = x[i] - positionsAfter[i];
+            wallModel::impact hit;
+            if (!wall.predict(positionsAfter[i], path, 1, hit))
+            {
+                continue;
+            }
+
+            // A bead meets the wall again with its contact held: a second
+            // contact where it meets it now, a zone at the third meeting
+            label held = 0;
+            for (const contactConstraints::contact& other : contacts_)
+            {
+                held += (other.rodA == labelPair(i, i));
+            }
+            contactConstraints::contact atWall;
+            if
+            (
+                lastRound || held >= 2
+             || wall.interaction(hit.patch)
+             != wallModel::interactionType::rebound
+             || !contactConstraints::makeWallContact
+                (
+                    i, positionsAfter[i] + hit.time*path, hit.normal,
+                    chains_, positionsAfter, atWall
+                )
+            )
+            {
+                zones_.add(c);
+                break;
+            }
+            contacts_.append(atWall);
+            contactGroups_.add(c);
+            added = true;
+        }
+    }
+    return added;
+}
+
+
 void Foam::polymer::contactProjection::solveContactGroups
 (
     const label newContacts,
     boolList& moved,
-    const wallModel* wall,
     const UList<point>& positionsAfter,
     const UList<vector>& velocitiesAfter,
-    const scalar time
+    const scalar time,
+    boolList& solved
 )
 {
     // The groups with a new contact, and the contacts of each (those of
@@ -123,7 +269,7 @@ void Foam::polymer::contactProjection::solveContactGroups
         }
     }
 
-    boolList solved(chains_.nChains(), false);
+    solved = false;
     forAll(groups, g)
     {
         if (!solve[g])
@@ -171,6 +317,11 @@ void Foam::polymer::contactProjection::solveContactGroups
             ++counts_.groupFailures;
             for (const contactConstraints::contact& held : groupContacts[g])
             {
+                if (contactConstraints::isWallContact(held))
+                {
+                    zones_.add(chains_.chainOf(held.rodA.first()));
+                    continue;
+                }
                 rodCrossingAudit::crossing crossing;
                 crossing.rodA = held.rodA;
                 crossing.rodB = held.rodB;
@@ -193,7 +344,6 @@ void Foam::polymer::contactProjection::solveContactGroups
             solved[c] = true;
         }
     }
-    addWallZones(wall, solved, positionsAfter);
 }
 
 
@@ -214,9 +364,12 @@ void Foam::polymer::contactProjection::countContactGroups()
     counts_.contactGroups += groups;
     for (const contactConstraints::contact& held : contacts_)
     {
-        counts_.contactsHeld +=
+        const bool free =
             !zones_.inZone(chains_.chainOf(held.rodA.first()))
          && !zones_.inZone(chains_.chainOf(held.rodB.first()));
+        counts_.contactsHeld += free;
+        counts_.wallContactsHeld +=
+            free && contactConstraints::isWallContact(held);
     }
 }
 
@@ -234,37 +387,46 @@ void Foam::polymer::contactProjection::resolveContacts
 {
     contacts_.clear();
     contactGroups_.reset(chains_.nChains());
+
+    // The chains whose paths the walls have not seen: the projected ones,
+    // then those each round solves again
+    boolList chainsToCheck(moved);
     for (label round = 0; ; ++round)
     {
-        cpuTime timer;
-        const boolList rodsToCheck(rodsToAudit(positionsAudited));
-        const List<rodCrossingAudit::crossing> found
-        (
-            audit.check(positionsAfter, chains_.positions(), rodsToCheck)
-        );
-        counts_.auditSeconds += timer.cpuTimeIncrement();
-
-        // Crossings of chains in zones, or after the last round, merge
-        // zones; the zone passes place and audit them
+        const bool lastRound = (round == maxContactRounds_);
         const label newContacts = contacts_.size();
-        for (const rodCrossingAudit::crossing& crossing : found)
+        cpuTime timer;
+        if (uncrossable_)
         {
-            if
+            const boolList rodsToCheck(rodsToAudit(positionsAudited));
+            const List<rodCrossingAudit::crossing> found
             (
-                round == maxContactRounds_
-             || !addContact(crossing, moved, positionsAfter)
-            )
+                audit.check(positionsAfter, chains_.positions(), rodsToCheck)
+            );
+
+            // Crossings of chains in zones, or after the last round, merge
+            // zones; the zone passes place and audit them
+            for (const rodCrossingAudit::crossing& crossing : found)
             {
-                mergeCrossing(crossing, moved, time);
+                if (lastRound || !addContact(crossing, moved, positionsAfter))
+                {
+                    mergeCrossing(crossing, moved, time);
+                }
             }
         }
+        if (wall && wall->active())
+        {
+            addWallContacts(*wall, chainsToCheck, positionsAfter, lastRound);
+        }
+        counts_.auditSeconds += timer.cpuTimeIncrement();
         if (contacts_.size() == newContacts)
         {
             break;
         }
         solveContactGroups
         (
-            newContacts, moved, wall, positionsAfter, velocitiesAfter, time
+            newContacts, moved, positionsAfter, velocitiesAfter, time,
+            chainsToCheck
         );
         counts_.contactSeconds += timer.cpuTimeIncrement();
     }
