@@ -46,6 +46,12 @@ inline void rodsOfBead
     asFirst = (ring || l < n - 1) ? l : -1;
 }
 
+//- The parameter in [0, 1] of a point on the segment p0-p1
+inline scalar alongSegment(const point& p, const point& p0, const point& p1)
+{
+    return min(max(((p - p0) & (p1 - p0))/magSqr(p1 - p0), scalar(0)), scalar(1));
+}
+
 } // End anonymous namespace
 
 
@@ -368,6 +374,35 @@ bool Foam::polymer::contactConstraints::newtonStep
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::polymer::contactConstraints::setContact
+(
+    const labelPair& rodA,
+    const labelPair& rodB,
+    const vector& shift,
+    const FixedList<scalar, 4>& weights,
+    const vector& normal,
+    const polymerChains& chains,
+    const UList<point>& x,
+    contact& result
+)
+{
+    result.rodA = rodA;
+    result.rodB = rodB;
+    result.shift = shift;
+    result.weights = weights;
+    result.normal = normal;
+    const FixedList<label, 4> beads(result.beads());
+    vector weighted(shift);
+    forAll(beads, b)
+    {
+        result.inverseMasses[b] =
+            1/chains.type(chains.chainOf(beads[b])).beadMass();
+        weighted += weights[b]*x[beads[b]];
+    }
+    result.gap = normal & weighted;
+}
+
+
 bool Foam::polymer::contactConstraints::makeContact
 (
     const labelPair& rodA,
@@ -394,25 +429,13 @@ bool Foam::polymer::contactConstraints::makeContact
         return false;
     }
 
-    const scalar s =
-        min(max(((onA - a0) & (a1 - a0))/magSqr(a1 - a0), scalar(0)), scalar(1));
-    const scalar u =
-        min(max(((onB - b0) & (b1 - b0))/magSqr(b1 - b0), scalar(0)), scalar(1));
-
-    result.rodA = rodA;
-    result.rodB = rodB;
-    result.shift = shift;
-    result.weights = {-(1 - s), -s, 1 - u, u};
-    result.normal = separation/distance;
-    const FixedList<label, 4> beads(result.beads());
-    vector weighted(shift);
-    forAll(beads, b)
-    {
-        result.inverseMasses[b] =
-            1/chains.type(chains.chainOf(beads[b])).beadMass();
-        weighted += result.weights[b]*x[beads[b]];
-    }
-    result.gap = result.normal & weighted;
+    const scalar s = alongSegment(onA, a0, a1);
+    const scalar u = alongSegment(onB, b0, b1);
+    setContact
+    (
+        rodA, rodB, shift, {-(1 - s), -s, 1 - u, u}, separation/distance,
+        chains, x, result
+    );
     return true;
 }
 
@@ -438,10 +461,8 @@ bool Foam::polymer::contactConstraints::makeCrossingContact
 
     point onA, onB;
     linePointRef(a0, a1).nearestDist(linePointRef(b0, b1), onA, onB);
-    const scalar s =
-        min(max(((onA - a0) & (a1 - a0))/magSqr(a1 - a0), scalar(0)), scalar(1));
-    const scalar u =
-        min(max(((onB - b0) & (b1 - b0))/magSqr(b1 - b0), scalar(0)), scalar(1));
+    const scalar s = alongSegment(onA, a0, a1);
+    const scalar u = alongSegment(onB, b0, b1);
 
     vector normal = (a1 - a0) ^ (b1 - b0);
     const scalar rodLength =
@@ -452,27 +473,18 @@ bool Foam::polymer::contactConstraints::makeCrossingContact
     }
     normal /= mag(normal);
 
-    result.rodA = rodA;
-    result.rodB = rodB;
-    result.shift = shift;
-    result.weights = {-(1 - s), -s, 1 - u, u};
-    const FixedList<label, 4> beads(result.beads());
-    vector weighted(shift);
-    forAll(beads, b)
+    // The normal turned from A to B at the start
+    setContact
+    (
+        rodA, rodB, shift, {-(1 - s), -s, 1 - u, u}, normal, chains, from,
+        result
+    );
+    if (result.gap < 0)
     {
-        result.inverseMasses[b] =
-            1/chains.type(chains.chainOf(beads[b])).beadMass();
-        weighted += result.weights[b]*from[beads[b]];
+        result.normal = -normal;
+        result.gap = -result.gap;
     }
-    scalar gap = normal & weighted;
-    if (gap < 0)
-    {
-        normal = -normal;
-        gap = -gap;
-    }
-    result.normal = normal;
-    result.gap = gap;
-    return gap > 1e-10*rodLength;
+    return result.gap > 1e-10*rodLength;
 }
 
 
@@ -486,15 +498,13 @@ bool Foam::polymer::contactConstraints::makeWallContact
     contact& result
 )
 {
-    const chainType& type = chains.type(chains.chainOf(bead));
-    result.rodA = labelPair(bead, bead);
-    result.rodB = labelPair(bead, bead);
-    result.shift = -hit;
-    result.weights = {0, 0, 1, 0};
-    result.inverseMasses = 1/type.beadMass();
-    result.normal = normal;
-    result.gap = normal & (from[bead] - hit);
-    return result.gap > 1e-10*type.rodLength();
+    setContact
+    (
+        labelPair(bead, bead), labelPair(bead, bead), -hit, {0, 0, 1, 0},
+        normal, chains, from, result
+    );
+    return
+        result.gap > 1e-10*chains.type(chains.chainOf(bead)).rodLength();
 }
 
 
@@ -517,22 +527,19 @@ bool Foam::polymer::contactConstraints::makeEdgeContact
     );
     const vector separation = onRod - onEdge;
     const scalar distance = mag(separation);
-    const chainType& type = chains.type(chains.chainOf(rod.first()));
-    if (!(distance > 1e-10*type.rodLength()))
+    if
+    (
+        !(distance > 1e-10*chains.type(chains.chainOf(rod.first())).rodLength())
+    )
     {
         return false;
     }
-    const scalar u =
-        min(max(((onRod - b0) & (b1 - b0))/magSqr(b1 - b0), scalar(0)), scalar(1));
-
-    result.rodA = rod;
-    result.rodB = rod;
-    result.shift = -onEdge;
-    result.weights = {0, 0, 1 - u, u};
-    result.inverseMasses = 1/type.beadMass();
-    result.normal = separation/distance;
-    result.gap =
-        result.normal & ((1 - u)*b0 + u*b1 - onEdge);
+    const scalar u = alongSegment(onRod, b0, b1);
+    setContact
+    (
+        rod, rod, -onEdge, {0, 0, 1 - u, u}, separation/distance, chains,
+        from, result
+    );
     return true;
 }
 

@@ -89,7 +89,8 @@ bool Foam::polymer::contactProjection::reprojectChain
 }
 
 
-Foam::scalar Foam::polymer::contactProjection::firstEdgeMeeting
+Foam::List<Foam::polymer::contactProjection::edgeMeeting>
+Foam::polymer::contactProjection::edgeMeetings
 (
     const wallModel& wall,
     const labelUList& chainList,
@@ -98,7 +99,7 @@ Foam::scalar Foam::polymer::contactProjection::firstEdgeMeeting
 {
     const wallEdges& edges = wall.edges();
     const List<point>& x = chains_.positions();
-    scalar first = GREAT;
+    DynamicList<edgeMeeting> meetings;
     for (const label c : chainList)
     {
         const label start = chains_.start(c);
@@ -129,10 +130,26 @@ Foam::scalar Foam::polymer::contactProjection::firstEdgeMeeting
                 const scalar s = edgeRootSolver_->earliestCrossing(pair, 1);
                 if (s >= 0)
                 {
-                    first = min(first, s);
+                    meetings.append({labelPair(i, j), edgei, shift, s});
                 }
             }
         }
+    }
+    return List<edgeMeeting>(std::move(meetings));
+}
+
+
+Foam::scalar Foam::polymer::contactProjection::firstEdgeMeeting
+(
+    const wallModel& wall,
+    const labelUList& chainList,
+    const UList<point>& from
+) const
+{
+    scalar first = GREAT;
+    for (const edgeMeeting& meeting : edgeMeetings(wall, chainList, from))
+    {
+        first = min(first, meeting.time);
     }
     return first;
 }

@@ -16,7 +16,6 @@ Description
 
 #include "contactProjection.H"
 #include "cpuTime.H"
-#include "rodPairCrossing.H"
 
 #include <algorithm>
 
@@ -100,63 +99,36 @@ bool Foam::polymer::contactProjection::addEdgeContacts
 )
 {
     const wallEdges& edges = wall.edges();
-    const List<point>& x = chains_.positions();
-    const label start = chains_.start(chaini);
-    const label end = chains_.end(chaini);
-    const bool ring = chains_.type(chaini).ring();
-    for (label i = start; i < (ring ? end : end - 1); ++i)
+    for
+    (
+        const edgeMeeting& meeting
+      : edgeMeetings(wall, labelList(1, chaini), positionsAfter)
+    )
     {
-        const label j = (i + 1 < end) ? i + 1 : start;
-        const point& from0 = positionsAfter[i];
-        const point& from1 = positionsAfter[j];
-
-        // The rod's path at its image inside the mesh
-        const vector shift = wall.imageShift(0.5*(from0 + from1));
-        boundBox box(from0);
-        box.add(from1);
-        box.add(x[i]);
-        box.add(x[j]);
-        for
+        // A rod that meets the walls again with its contacts held: a
+        // second contact, a zone at the third meeting
+        label held = 0;
+        for (const contactConstraints::contact& other : contacts_)
+        {
+            held += (other.rodA == meeting.rod && other.rodB == meeting.rod);
+        }
+        contactConstraints::contact atEdge;
+        if
         (
-            const label edgei
-          : edges.near(boundBox(box.min() + shift, box.max() + shift))
+            lastRound || held >= 2
+         || !contactConstraints::makeEdgeContact
+            (
+                meeting.rod,
+                edges.start(meeting.edge) - meeting.shift,
+                edges.end(meeting.edge) - meeting.shift,
+                chains_, positionsAfter, atEdge
+            )
         )
         {
-            const rodPairCrossing pair
-            (
-                from0 + shift, from1 + shift,
-                edges.start(edgei), edges.end(edgei),
-                x[i] - from0, x[j] - from1, Zero, Zero
-            );
-            if (edgeRootSolver_->earliestCrossing(pair, 1) < 0)
-            {
-                continue;
-            }
-
-            // A rod that meets the walls again with its contacts held: a
-            // second contact, a zone at the third meeting
-            const labelPair rod(i, j);
-            label held = 0;
-            for (const contactConstraints::contact& other : contacts_)
-            {
-                held += (other.rodA == rod && other.rodB == rod);
-            }
-            contactConstraints::contact atEdge;
-            if
-            (
-                lastRound || held >= 2
-             || !contactConstraints::makeEdgeContact
-                (
-                    rod, edges.start(edgei) - shift, edges.end(edgei) - shift,
-                    chains_, positionsAfter, atEdge
-                )
-            )
-            {
-                return false;
-            }
-            contacts_.append(atEdge);
-            added = true;
+            return false;
         }
+        contacts_.append(atEdge);
+        added = true;
     }
     return true;
 }
