@@ -80,13 +80,7 @@ scalar gapError
     const UList<point>& x
 )
 {
-    const FixedList<label, 4> beads(contact.beads());
-    vector separation(contact.shift);
-    forAll(beads, b)
-    {
-        separation += contact.weights[b]*x[beads[b]];
-    }
-    return mag((contact.normal & separation) - contact.gap);
+    return mag(contactConstraints::presentGap(contact, x) - contact.gap);
 }
 
 

@@ -129,15 +129,9 @@ Foam::scalar Foam::polymer::contactConstraints::residual
     }
     for (const contact& cq : contacts)
     {
-        const FixedList<label, 4> beads(cq.beads());
-        vector separation(cq.shift);
-        forAll(beads, b)
-        {
-            separation += cq.weights[b]*x[beads[b]];
-        }
         const scalar rodLength =
             chains.type(chains.chainOf(cq.rodA.first())).rodLength();
-        r = maxOrNaN(r, mag((cq.normal & separation) - cq.gap)/rodLength);
+        r = maxOrNaN(r, mag(presentGap(cq, x) - cq.gap)/rodLength);
     }
     return r;
 }
@@ -213,6 +207,70 @@ bool Foam::polymer::contactConstraints::solveBlock
 }
 
 
+Foam::scalar Foam::polymer::contactConstraints::presentGap
+(
+    const contact& c,
+    const UList<point>& x
+)
+{
+    const FixedList<label, 4> beads(c.beads());
+    vector separation(c.shift);
+    forAll(beads, b)
+    {
+        separation += c.weights[b]*x[beads[b]];
+    }
+    return c.normal & separation;
+}
+
+
+void Foam::polymer::contactConstraints::couple
+(
+    const polymerChains& chains,
+    const labelUList& firstRod,
+    const Map<label>& groupIndex,
+    const contact& c,
+    const UList<point>& start,
+    UList<scalar>& column,
+    DynamicList<Tuple2<label, scalar>>& row
+)
+{
+    // A bead's move along the normal changes the sigma of its two rods
+    // (column of B), and the rods' multipliers move it along their
+    // directions (row of C): rod l - 1 holds bead l as its second bead,
+    // rod l as its first
+    const List<point>& x = chains.positions();
+    const FixedList<label, 4> beads(c.beads());
+    forAll(beads, b)
+    {
+        const label chaini = chains.chainOf(beads[b]);
+        const label first = firstRod[groupIndex[chaini]];
+        const label s0 = chains.start(chaini);
+        const label n = chains.size(chaini);
+        const vector move = c.weights[b]*c.inverseMasses[b]*c.normal;
+        label asSecond, asFirst;
+        rodsOfBead
+        (
+            beads[b] - s0, n, chains.type(chaini).ring(), asSecond, asFirst
+        );
+        for (const label k : {asSecond, asFirst})
+        {
+            if (k < 0)
+            {
+                continue;
+            }
+            const scalar sign = (k == asSecond) ? 1 : -1;
+            const label i = s0 + k, j = s0 + rodEnd(k, n);
+            column[first + k] += sign*2*((x[j] - x[i]) & move);
+            row.append
+            ({
+                first + k,
+                sign*c.weights[b]*(c.normal & (start[j] - start[i]))
+            });
+        }
+    }
+}
+
+
 bool Foam::polymer::contactConstraints::newtonStep
 (
     const polymerChains& chains,
@@ -225,7 +283,6 @@ bool Foam::polymer::contactConstraints::newtonStep
     scalarField& contactStep
 )
 {
-    const List<point>& x = chains.positions();
     const label nRodsAll = rodStep.size();
     const label m = contacts.size();
 
@@ -244,109 +301,53 @@ bool Foam::polymer::contactConstraints::newtonStep
         }
     }
 
-    // Each contact's column of B (its beads' moves in the rods' sigma),
-    // through the blocks: T^-1 B; and its row of C (its gap in the rods'
-    // multipliers), a few entries
+    // Each contact's column of B through the blocks, T^-1 B, and its row
+    // of C
     List<scalarField> columns(m, scalarField(nRodsAll, Zero));
     List<DynamicList<Tuple2<label, scalar>>> rows(m);
-    Eigen::MatrixXd schur(m, m);
-    Eigen::VectorXd rhs(m);
     forAll(contacts, q)
     {
-        const contact& cq = contacts[q];
-        const FixedList<label, 4> beads(cq.beads());
+        couple
+        (
+            chains, firstRod, groupIndex, contacts[q], start, columns[q],
+            rows[q]
+        );
         labelHashSet chainsOfContact;
-        forAll(beads, b)
+        for (const label bead : contacts[q].beads())
         {
-            const label c = chains.chainOf(beads[b]);
-            const label gi = groupIndex[c];
-            const label s0 = chains.start(c);
-            const label n = chains.size(c);
-            const vector move = cq.weights[b]*cq.inverseMasses[b]*cq.normal;
-            label asSecond, asFirst;
-            rodsOfBead
-            (
-                beads[b] - s0, n, chains.type(c).ring(), asSecond, asFirst
-            );
-            if (asSecond >= 0)
-            {
-                const label k = s0 + asSecond;
-                const vector s = x[s0 + rodEnd(asSecond, n)] - x[k];
-                columns[q][firstRod[gi] + asSecond] += 2*(s & move);
-                rows[q].append
-                ({
-                    firstRod[gi] + asSecond,
-                    cq.weights[b]
-                   *(cq.normal & (start[s0 + rodEnd(asSecond, n)] - start[k]))
-                });
-            }
-            if (asFirst >= 0)
-            {
-                const label k = s0 + asFirst;
-                const vector s = x[s0 + rodEnd(asFirst, n)] - x[k];
-                columns[q][firstRod[gi] + asFirst] -= 2*(s & move);
-                rows[q].append
-                ({
-                    firstRod[gi] + asFirst,
-                   -cq.weights[b]
-                   *(cq.normal & (start[s0 + rodEnd(asFirst, n)] - start[k]))
-                });
-            }
-            chainsOfContact.insert(c);
+            chainsOfContact.insert(chains.chainOf(bead));
         }
         for (const label c : chainsOfContact)
         {
-            const label gi = groupIndex[c];
             SubList<scalar> block
             (
-                columns[q], chains.type(c).nRods(), firstRod[gi]
+                columns[q], chains.type(c).nRods(), firstRod[groupIndex[c]]
             );
             if (!solveBlock(chains, c, start, block))
             {
                 return false;
             }
         }
-
-        // The gap's residual
-        vector separation(cq.shift);
-        forAll(beads, b)
-        {
-            separation += cq.weights[b]*x[beads[b]];
-        }
-        rhs(q) = -((cq.normal & separation) - cq.gap);
     }
 
-    // The Schur complement D - C T^-1 B and its right-hand side
-    // -h - C T^-1 (-sigma)
+    // The Schur complement D - C T^-1 B, and -h - C T^-1 (-sigma)
+    Eigen::MatrixXd schur(m, m);
+    Eigen::VectorXd rhs(m);
     forAll(contacts, p)
     {
         const contact& cp = contacts[p];
-        const FixedList<label, 4> beadsP(cp.beads());
+        rhs(p) = cp.gap - presentGap(cp, chains.positions());
         for (const Tuple2<label, scalar>& entry : rows[p])
         {
             rhs(p) -= entry.second()*rodStep[entry.first()];
         }
         forAll(contacts, q)
         {
-            const contact& cq = contacts[q];
-            const FixedList<label, 4> beadsQ(cq.beads());
-            scalar d = 0;
-            forAll(beadsP, b)
-            {
-                forAll(beadsQ, bq)
-                {
-                    if (beadsP[b] == beadsQ[bq])
-                    {
-                        d += cp.weights[b]*cq.weights[bq]
-                           *cq.inverseMasses[bq]*(cp.normal & cq.normal);
-                    }
-                }
-            }
+            schur(p, q) = contactCoupling(cp, contacts[q]);
             for (const Tuple2<label, scalar>& entry : rows[p])
             {
-                d -= entry.second()*columns[q][entry.first()];
+                schur(p, q) -= entry.second()*columns[q][entry.first()];
             }
-            schur(p, q) = d;
         }
     }
 
@@ -372,6 +373,32 @@ bool Foam::polymer::contactConstraints::newtonStep
 }
 
 
+Foam::scalar Foam::polymer::contactConstraints::contactCoupling
+(
+    const contact& p,
+    const contact& q
+)
+{
+    // The change of p's gap per unit impulse of q: their shared beads'
+    // weights over the beads' masses
+    const FixedList<label, 4> beadsP(p.beads());
+    const FixedList<label, 4> beadsQ(q.beads());
+    scalar d = 0;
+    forAll(beadsP, b)
+    {
+        forAll(beadsQ, bq)
+        {
+            if (beadsP[b] == beadsQ[bq])
+            {
+                d += p.weights[b]*q.weights[bq]*q.inverseMasses[bq]
+                    *(p.normal & q.normal);
+            }
+        }
+    }
+    return d;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::polymer::contactConstraints::setContact
@@ -392,14 +419,12 @@ void Foam::polymer::contactConstraints::setContact
     result.weights = weights;
     result.normal = normal;
     const FixedList<label, 4> beads(result.beads());
-    vector weighted(shift);
     forAll(beads, b)
     {
         result.inverseMasses[b] =
             1/chains.type(chains.chainOf(beads[b])).beadMass();
-        weighted += weights[b]*x[beads[b]];
     }
-    result.gap = normal & weighted;
+    result.gap = presentGap(result, x);
 }
 
 

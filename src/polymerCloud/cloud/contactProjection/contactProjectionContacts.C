@@ -10,7 +10,8 @@ License
 
 Description
     contactProjection's contact rounds: the crossings of the re-projection's
-    paths held apart by contact constraints before any rigid impact zone.
+    paths held apart, and its beads and rods held off the walls, by contact
+    constraints before any rigid impact zone.
 
 \*---------------------------------------------------------------------------*/
 
@@ -31,6 +32,23 @@ Foam::labelPair Foam::polymer::contactProjection::rodKey
 }
 
 
+Foam::label Foam::polymer::contactProjection::heldContacts
+(
+    const labelPair& rodA,
+    const labelPair& rodB
+) const
+{
+    label held = 0;
+    for (const contactConstraints::contact& other : contacts_)
+    {
+        held +=
+            (other.rodA == rodA && other.rodB == rodB)
+         || (other.rodA == rodB && other.rodB == rodA);
+    }
+    return held;
+}
+
+
 bool Foam::polymer::contactProjection::addContact
 (
     const rodCrossingAudit::crossing& crossing,
@@ -48,13 +66,7 @@ bool Foam::polymer::contactProjection::addContact
     // A pair that crosses again with its contact held crosses elsewhere
     // along the rods: its next contact is where they cross, and a pair
     // that crosses a third time takes a zone
-    label held = 0;
-    for (const contactConstraints::contact& other : contacts_)
-    {
-        held +=
-            (other.rodA == crossing.rodA && other.rodB == crossing.rodB)
-         || (other.rodA == crossing.rodB && other.rodB == crossing.rodA);
-    }
+    const label held = heldContacts(crossing.rodA, crossing.rodB);
     if (held >= 2)
     {
         return false;
@@ -107,15 +119,10 @@ bool Foam::polymer::contactProjection::addEdgeContacts
     {
         // A rod that meets the walls again with its contacts held: a
         // second contact, a zone at the third meeting
-        label held = 0;
-        for (const contactConstraints::contact& other : contacts_)
-        {
-            held += (other.rodA == meeting.rod && other.rodB == meeting.rod);
-        }
         contactConstraints::contact atEdge;
         if
         (
-            lastRound || held >= 2
+            lastRound || heldContacts(meeting.rod, meeting.rod) >= 2
          || !contactConstraints::makeEdgeContact
             (
                 meeting.rod,
@@ -134,6 +141,51 @@ bool Foam::polymer::contactProjection::addEdgeContacts
 }
 
 
+bool Foam::polymer::contactProjection::addBeadContacts
+(
+    const wallModel& wall,
+    const label chaini,
+    const UList<point>& positionsAfter,
+    const bool lastRound,
+    bool& added
+)
+{
+    const List<point>& x = chains_.positions();
+    for (label i = chains_.start(chaini); i < chains_.end(chaini); ++i)
+    {
+        const vector path = x[i] - positionsAfter[i];
+        wallModel::impact hit;
+        if (!wall.predict(positionsAfter[i], path, 1, hit))
+        {
+            continue;
+        }
+
+        // A bead that meets the wall again with its contact held: a
+        // second contact where it meets it now, a zone at the third
+        // meeting; a path across a patch that is not a rebound wall (an
+        // outlet's, say) is no wall's to hold
+        const labelPair bead(i, i);
+        contactConstraints::contact atWall;
+        if
+        (
+            lastRound || heldContacts(bead, bead) >= 2
+         || wall.interaction(hit.patch) != wallModel::interactionType::rebound
+         || !contactConstraints::makeWallContact
+            (
+                i, positionsAfter[i] + hit.time*path, hit.normal,
+                chains_, positionsAfter, atWall
+            )
+        )
+        {
+            return false;
+        }
+        contacts_.append(atWall);
+        added = true;
+    }
+    return true;
+}
+
+
 bool Foam::polymer::contactProjection::addWallContacts
 (
     const wallModel& wall,
@@ -142,68 +194,34 @@ bool Foam::polymer::contactProjection::addWallContacts
     const bool lastRound
 )
 {
-    const List<point>& x = chains_.positions();
     const bool edges = wallEdges_ && wall.edges().size();
-    bool added = false;
+    bool anyAdded = false;
     forAll(chainsToCheck, c)
     {
         if (!chainsToCheck[c] || zones_.inZone(c))
         {
             continue;
         }
-        bool edgeAdded = false;
+        bool added = false;
         if
         (
-            edges
-         && !addEdgeContacts(wall, c, positionsAfter, lastRound, edgeAdded)
+            (
+                edges
+             && !addEdgeContacts(wall, c, positionsAfter, lastRound, added)
+            )
+         || !addBeadContacts(wall, c, positionsAfter, lastRound, added)
         )
         {
             zones_.add(c);
             continue;
         }
-        if (edgeAdded)
+        if (added)
         {
             contactGroups_.add(c);
-            added = true;
-        }
-        for (label i = chains_.start(c); i < chains_.end(c); ++i)
-        {
-            const vector path = x[i] - positionsAfter[i];
-            wallModel::impact hit;
-            if (!wall.predict(positionsAfter[i], path, 1, hit))
-            {
-                continue;
-            }
-
-            // A bead meets the wall again with its contact held: a second
-            // contact where it meets it now, a zone at the third meeting
-            label held = 0;
-            for (const contactConstraints::contact& other : contacts_)
-            {
-                held += (other.rodA == labelPair(i, i));
-            }
-            contactConstraints::contact atWall;
-            if
-            (
-                lastRound || held >= 2
-             || wall.interaction(hit.patch)
-             != wallModel::interactionType::rebound
-             || !contactConstraints::makeWallContact
-                (
-                    i, positionsAfter[i] + hit.time*path, hit.normal,
-                    chains_, positionsAfter, atWall
-                )
-            )
-            {
-                zones_.add(c);
-                break;
-            }
-            contacts_.append(atWall);
-            contactGroups_.add(c);
-            added = true;
+            anyAdded = true;
         }
     }
-    return added;
+    return anyAdded;
 }
 
 
@@ -321,7 +339,6 @@ void Foam::polymer::contactProjection::solveContactGroups
 
 void Foam::polymer::contactProjection::countContactGroups()
 {
-    labelList chainsOfRoot(chains_.nChains(), 0);
     label groups = 0;
     for (const labelList& group : contactGroups_.zones(chains_))
     {
