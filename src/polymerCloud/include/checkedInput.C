@@ -129,6 +129,32 @@ Foam::label Foam::polymer::checkedInput::labelAtLeastOrDefault
 }
 
 
+void Foam::polymer::checkedInput::onlyKeywords
+(
+    const dictionary& dict,
+    const wordList& known,
+    const string& owner
+)
+{
+    for (const entry& e : dict)
+    {
+        if (!known.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Keyword '" << e.keyword() << "' in " << dict.name()
+                << " is not a keyword of " << owner.c_str()
+                << ": misspelt, or meant for another dictionary" << nl
+                << "    expected: one of";
+            for (const word& keyword : known)
+            {
+                FatalIOError << ' ' << keyword;
+            }
+            FatalIOError << exit(FatalIOError);
+        }
+    }
+}
+
+
 bool Foam::polymer::checkedInput::firstOfTwo
 (
     const dictionary& dict,

@@ -104,7 +104,21 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
             " a whole number; 0: zones at once>"
         )
     )
-{}
+{
+    if (properties.isDict("solution"))
+    {
+        checkedInput::onlyKeywords
+        (
+            properties.subDict("solution"),
+            {
+                "active", "seed", "rodLengthCheck",
+                "maxNeighbourDisplacement", "maxSubCycles",
+                "contactTreatment", "maxContactRounds"
+            },
+            "the cloud's solution"
+        );
+    }
+}
 
 
 // ************************************************************************* //
