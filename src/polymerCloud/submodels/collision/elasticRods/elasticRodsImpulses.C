@@ -80,6 +80,47 @@ Foam::scalar Foam::polymer::collisionModels::elasticRods::velocityImpulse
 }
 
 
+Foam::FixedList<Foam::vector, 4>
+Foam::polymer::collisionModels::elasticRods::dumbbellVelocityChange
+(
+    const rodPairCrossing& pair,
+    const FixedList<label, 4>& beads,
+    const polymerChains& chains,
+    const UList<vector>& velocitiesDagger
+) const
+{
+    // The four beads' own elastic impulse, the one the paths took (a held
+    // chain an immovable obstacle)
+    scalar lambdaI, lambdaJ;
+    vector n;
+    pair.contact(0, lambdaI, lambdaJ, n);
+    const FixedList<scalar, 4> weights
+    ({
+        1 - lambdaI, lambdaI, lambdaJ - 1, -lambdaJ
+    });
+    FixedList<scalar, 4> inverseMasses;
+    scalar u = 0, uDagger = 0, perUnit = 0;
+    for (label k = 0; k < 4; ++k)
+    {
+        const label c = chains.chainOf(beads[k]);
+        const bool held = heldChains_.found(c);
+        inverseMasses[k] = held ? 0 : 1/chains.type(c).beadMass();
+        u += weights[k]*(velocity_[beads[k]] & n);
+        uDagger += held ? 0 : weights[k]*(velocitiesDagger[beads[k]] & n);
+        perUnit += sqr(weights[k])*inverseMasses[k];
+    }
+    const scalar JDagger =
+        velocityImpulse(-2*u/perUnit, u, uDagger, perUnit);
+
+    FixedList<vector, 4> change;
+    for (label k = 0; k < 4; ++k)
+    {
+        change[k] = (JDagger*weights[k]*inverseMasses[k])*n;
+    }
+    return change;
+}
+
+
 void Foam::polymer::collisionModels::elasticRods::applyResponse
 (
     const polymerChains& chains,
@@ -347,40 +388,27 @@ bool Foam::polymer::collisionModels::elasticRods::resolve
         return false;
     }
 
-    // The velocities' impulse on the four beads: the paths' change (the
-    // paper's 3g, to the bit as before) or their own (a held chain an
-    // immovable obstacle)
-    FixedList<scalar, 4> weights, inverseMasses;
-    scalar lambdaI, lambdaJ;
-    vector n;
-    pair.contact(0, lambdaI, lambdaJ, n);
-    weights = {1 - lambdaI, lambdaI, lambdaJ - 1, -lambdaJ};
-    scalar u = 0, uDagger = 0, perUnit = 0;
-    for (label k = 0; k < 4; ++k)
+    // The velocities' change: the paths' (the paper's 3g) or their own
+    // elastic impulse
+    FixedList<vector, 4> change;
+    if (velocityImpulse_ == velocityImpulseType::elastic)
     {
-        const bool held = (k < 2 ? heldI : heldJ);
-        inverseMasses[k] =
-            held ? 0 : 1/chains.type(k < 2 ? chainI : chainJ).beadMass();
-        u += weights[k]*(velocity_[beads[k]] & n);
-        uDagger +=
-            held ? 0 : weights[k]*(velocitiesDagger[beads[k]] & n);
-        perUnit += sqr(weights[k])*inverseMasses[k];
+        change = dumbbellVelocityChange(pair, beads, chains, velocitiesDagger);
     }
-    const scalar JDagger =
-        velocityImpulse(-2*u/perUnit, u, uDagger, perUnit);
-
+    else
+    {
+        for (label k = 0; k < 4; ++k)
+        {
+            change[k] = after[k] - velocity_[beads[k]];
+        }
+    }
     for (label k = 0; k < 4; ++k)
     {
-        const label bead = beads[k];
-        if (k < 2 ? heldI : heldJ)
+        if (!(k < 2 ? heldI : heldJ))
         {
-            continue;
+            velocitiesDagger[beads[k]] += change[k];
+            setVelocity(beads[k], after[k]);
         }
-        velocitiesDagger[bead] +=
-            (velocityImpulse_ == velocityImpulseType::pathChange)
-          ? after[k] - velocity_[bead]
-          : (JDagger*weights[k]*inverseMasses[k])*n;
-        setVelocity(bead, after[k]);
     }
 
     contacts_.record(pairi, e.side, e.atContact);
