@@ -200,8 +200,35 @@ bool Foam::polymer::collisionModels::elasticRods::sweptApart
     point onA, onB;
     const scalar distance =
         linePointRef(x[0], x[1]).nearestDist(linePointRef(x[2], x[3]), onA, onB);
-    clearance = distance - (std::sqrt(closing) + margin);
-    return distance > std::sqrt(closing) + margin;
+    const scalar reach = std::sqrt(closing);
+    clearance = distance - (reach + margin);
+    if (clearance > 0)
+    {
+        return true;
+    }
+
+    // Or the distance at the middles of pieces of the rest more than the
+    // rods can close over half a piece: rods close in on each other over
+    // a step, but seldom meet
+    scalar lowest = GREAT;
+    for (label k = 0; k < nApartPieces; ++k)
+    {
+        const scalar s = (k + 0.5)/nApartPieces;
+        lowest = min
+        (
+            lowest,
+            linePointRef(x[0] + s*moved[0], x[1] + s*moved[1]).nearestDist
+            (
+                linePointRef(x[2] + s*moved[2], x[3] + s*moved[3]), onA, onB
+            )
+        );
+        clearance = lowest - (0.5*reach/nApartPieces + margin);
+        if (clearance <= 0)
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 
