@@ -541,11 +541,16 @@ void Foam::polymer::collisionModels::elasticRods::correct
     wallBudget_.resize(nBeads);
     wallBudget_ = -GREAT;
 
-    // Broad phase: rods whose swept boxes overlap
+    // Broad phase: rods whose swept boxes, with the margin that an event
+    // on their chains grows them by, overlap. Most rods of a crowded
+    // scene take an impulse through their chain within the step: grown
+    // at once, their boxes need not be inserted a second time then
     List<boundBox> boxes(rods_.size());
     forAll(boxes, rod)
     {
-        boxes[rod] = sweep(rod, 0, deltaT);
+        const boundBox swept(sweep(rod, 0, deltaT));
+        const vector fat(vector::uniform(growMargin(rod, 0, deltaT)));
+        boxes[rod] = boundBox(swept.min() - fat, swept.max() + fat);
     }
     grid_.build(rods_, std::move(boxes), lattice_);
     pairBudget_.assign(grid_.pairs().size(), -GREAT);
