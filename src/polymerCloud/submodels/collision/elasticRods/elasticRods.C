@@ -116,6 +116,7 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     rodStamp_(),
     repredictions_(0),
     rodsToPredict_(),
+    rodsBeyondLimit_(),
     frozenChains_(),
     heldChains_()
 {}
@@ -276,9 +277,11 @@ void Foam::polymer::collisionModels::elasticRods::predict
     )
     {
         pairBudget_[pairi] = clearance + pairDrift(pairi);
+        limitDrift(pairi);
         return;
     }
     pairBudget_[pairi] = -GREAT;
+    limitDrift(pairi);
 
     const rodPairCrossing pair
     (
@@ -383,21 +386,39 @@ void Foam::polymer::collisionModels::elasticRods::repredict
         }
     }
 
-    // Grow the broad phase where the new paths leave the rods' boxes
+    // Grow the broad phase where the new paths leave the rods' boxes. A
+    // rod with new candidate pairs, or drifted beyond its limit, has its
+    // pairs looked at; the others keep the stamp of no re-prediction
     const bool edges = wall_ && wallEdges_ && wall_->edges().size();
+    rodsBeyondLimit_.clear();
     for (const label rod : rodsToPredict_)
     {
         const boundBox box(sweep(rod, t, dt));
-        grid_.grow(rod, box, growMargin(rod, t, dt));
+        const bool grown = grid_.grow(rod, box, growMargin(rod, t, dt));
         if (edges)
         {
             predictEdges(rod, box, t, dt);
         }
+        if (grown || !(rodDrift(rod) < rodLimit_[rod]))
+        {
+            rodsBeyondLimit_.append(rod);
+        }
+        else
+        {
+            rodStamp_[rod] = 0;
+        }
     }
 
-    // A pair of two re-predicted rods from its first rod only
-    for (const label rod : rodsToPredict_)
+    if (pairBudget_.size() < size_t(grid_.pairs().size()))
     {
+        pairBudget_.resize(grid_.pairs().size(), -GREAT);
+    }
+
+    // A pair of two such rods from its first rod only. Each rod's limit
+    // anew from its pairs' budgets, the partners' lowered to match
+    for (const label rod : rodsBeyondLimit_)
+    {
+        scalar limit = GREAT;
         for (const label pairi : grid_.rodPairs(rod))
         {
             const labelPair& pair = grid_.pairs()[pairi];
@@ -412,7 +433,9 @@ void Foam::polymer::collisionModels::elasticRods::repredict
             {
                 predict(pairi, t, dt);
             }
+            limit = min(limit, limitDrift(pairi, rod));
         }
+        rodLimit_[rod] = limit;
     }
 
     if (wall_)
@@ -554,6 +577,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
     }
     grid_.build(rods_, std::move(boxes), lattice_);
     pairBudget_.assign(grid_.pairs().size(), -GREAT);
+    rodLimit_.assign(rods_.size(), GREAT);
 
     queue_.reset(nBeads);
     contacts_.clear();

@@ -472,20 +472,22 @@ void Foam::polymer::sweptBoxGrid::build
 }
 
 
-void Foam::polymer::sweptBoxGrid::grow
+bool Foam::polymer::sweptBoxGrid::grow
 (
     const label rod,
     const boundBox& box,
     const scalar margin
 )
 {
-    if (!box_[rod].contains(box))
+    if (box_[rod].contains(box))
     {
-        const vector fat(vector::uniform(margin));
-        box_[rod].add(box.min() - fat);
-        box_[rod].add(box.max() + fat);
-        insert(rod);
+        return false;
     }
+    const vector fat(vector::uniform(margin));
+    box_[rod].add(box.min() - fat);
+    box_[rod].add(box.max() + fat);
+    insert(rod);
+    return true;
 }
 
 
