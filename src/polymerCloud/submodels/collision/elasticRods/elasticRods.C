@@ -105,6 +105,8 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     wallBudget_(),
     grid_(),
     queue_(),
+    deferredPairs_(),
+    deferredBrackets_(),
     contacts_(),
     edgePairs_(),
     edgePairIndex_(),
@@ -290,13 +292,14 @@ void Foam::polymer::collisionModels::elasticRods::predict
 
     label side = 0;
     bool atContact = false;
+    crossingRootSolver::bracket next;
     const scalar s = contacts_.earliestCrossing
     (
-        pairi, pair, *rootSolver_, dt - t, side, atContact
+        pairi, pair, *rootSolver_, dt - t, side, atContact, next
     );
     ++counters_.pairChecks;
 
-    if (debug > 1 && s >= 0)
+    if (debug > 1 && s >= 0 && next.interval < 0)
     {
         const FixedList<scalar, 4> c = pair.tripleProductCubic();
         scalar li, lj;
@@ -318,7 +321,42 @@ void Foam::polymer::collisionModels::elasticRods::predict
         e.side = side;
         e.atContact = atContact;
         e.beads = FixedList<label, 4>({a0, a1, b0, b1});
+        if (next.interval >= 0)
+        {
+            e.deferred = deferredPairs_.size();
+            deferredPairs_.push_back(pair);
+            deferredBrackets_.push_back(next);
+        }
         queue_.push(e);
+    }
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::continuePrediction
+(
+    const event& e,
+    const scalar dt
+)
+{
+    // The search from the same paths and rest of the step as predicted:
+    // the same crossing as a search that was not deferred
+    crossingRootSolver::bracket& next = deferredBrackets_[e.deferred];
+    label side = e.side;
+    const scalar s = pairContacts::continueCrossing
+    (
+        deferredPairs_[e.deferred], *rootSolver_, dt - e.from, side, next
+    );
+    if (s >= 0)
+    {
+        event found(e);
+        found.time = e.from + s;
+        found.offset = s;
+        found.side = side;
+        if (next.interval < 0)
+        {
+            found.deferred = -1;
+        }
+        queue_.push(found);
     }
 }
 
@@ -580,6 +618,8 @@ void Foam::polymer::collisionModels::elasticRods::correct
     rodLimit_.assign(rods_.size(), GREAT);
 
     queue_.reset(nBeads);
+    deferredPairs_.clear();
+    deferredBrackets_.clear();
     contacts_.clear();
     edgeContacts_.clear();
     edgePairs_.clear();
@@ -619,6 +659,12 @@ void Foam::polymer::collisionModels::elasticRods::correct
     event e;
     while (queue_.next(e))
     {
+        if (e.deferred >= 0)
+        {
+            continuePrediction(e, deltaT);
+            continue;
+        }
+
         const bool wallEvent = (e.pair < 0);
 
         nShort = (e.time - now < stallTime_*deltaT) ? nShort + 1 : 0;

@@ -35,22 +35,21 @@ bool Foam::polymer::crossingRootSolver::signChange
 }
 
 
-Foam::scalar Foam::polymer::crossingRootSolver::bisect
+bool Foam::polymer::crossingRootSolver::narrow
 (
     const rodPairCrossing& pair,
-    scalar a,
-    scalar b,
-    scalar valueA
+    scalar& a,
+    scalar& b,
+    scalar& valueA,
+    const label maxSteps
 )
 {
-    // To the last representable midpoint. The end before the sign change
-    // is returned: the state there is not yet crossed.
-    for (int iter = 0; iter < 200; ++iter)
+    for (label step = 0; step < maxSteps; ++step)
     {
         const scalar middle = 0.5*(a + b);
         if (middle <= a || middle >= b)
         {
-            break;
+            return false;
         }
         const scalar valueMiddle = pair.tripleProduct(middle);
         if ((valueMiddle < 0) == (valueA < 0))
@@ -63,7 +62,49 @@ Foam::scalar Foam::polymer::crossingRootSolver::bisect
             b = middle;
         }
     }
+    return true;
+}
+
+
+Foam::scalar Foam::polymer::crossingRootSolver::bisect
+(
+    const rodPairCrossing& pair,
+    scalar a,
+    scalar b,
+    scalar valueA
+)
+{
+    // To the last representable midpoint. The end before the sign change
+    // is returned: the state there is not yet crossed.
+    narrow(pair, a, b, valueA, 200);
     return a;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::polymer::crossingRootSolver::deferredCrossing
+(
+    const rodPairCrossing& pair,
+    const scalar T,
+    bracket& next
+) const
+{
+    next.interval = -1;
+    return earliestCrossing(pair, T);
+}
+
+
+Foam::scalar Foam::polymer::crossingRootSolver::continueCrossing
+(
+    const rodPairCrossing& pair,
+    const scalar T,
+    bracket& next
+) const
+{
+    // Not reached: the search was not deferred
+    next.interval = -1;
+    return earliestCrossing(pair, T);
 }
 
 

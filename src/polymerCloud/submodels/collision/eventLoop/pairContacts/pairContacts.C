@@ -207,10 +207,12 @@ Foam::scalar Foam::polymer::pairContacts::earliestCrossing
     const crossingRootSolver& rootSolver,
     const scalar T,
     label& side,
-    bool& atContact
+    bool& atContact,
+    crossingRootSolver::bracket& next
 ) const
 {
     atContact = false;
+    next.interval = -1;
 
     // W = side V: positive on the pair's own side. A resolved pair at
     // contact is followed by W; one well on its side, or crossed beyond
@@ -232,8 +234,53 @@ Foam::scalar Foam::polymer::pairContacts::earliestCrossing
         }
     }
 
-    const scalar s = rootSolver.earliestCrossing(pair, T);
-    side = sideBefore(pair, s, (V0 < 0) ? -1 : 1);
+    const scalar s = rootSolver.deferredCrossing(pair, T, next);
+    side = (V0 < 0) ? -1 : 1;
+    if (next.interval < 0)
+    {
+        side = sideBefore(pair, s, side);
+    }
+    return s;
+}
+
+
+Foam::scalar Foam::polymer::pairContacts::earliestCrossing
+(
+    const label pairi,
+    const rodPairCrossing& pair,
+    const crossingRootSolver& rootSolver,
+    const scalar T,
+    label& side,
+    bool& atContact
+) const
+{
+    crossingRootSolver::bracket next;
+    scalar s = earliestCrossing
+    (
+        pairi, pair, rootSolver, T, side, atContact, next
+    );
+    while (next.interval >= 0)
+    {
+        s = continueCrossing(pair, rootSolver, T, side, next);
+    }
+    return s;
+}
+
+
+Foam::scalar Foam::polymer::pairContacts::continueCrossing
+(
+    const rodPairCrossing& pair,
+    const crossingRootSolver& rootSolver,
+    const scalar T,
+    label& side,
+    crossingRootSolver::bracket& next
+)
+{
+    const scalar s = rootSolver.continueCrossing(pair, T, next);
+    if (next.interval < 0)
+    {
+        side = sideBefore(pair, s, (pair.tripleProduct(0) < 0) ? -1 : 1);
+    }
     return s;
 }
 
