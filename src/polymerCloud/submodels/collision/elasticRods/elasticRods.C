@@ -102,6 +102,10 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     deltaT_(0),
     drift_(),
     pairBudget_(),
+    rodLimit_(),
+    rodClosePairs_(),
+    pairListed_(),
+    pairStamp_(),
     wallBudget_(),
     grid_(),
     queue_(),
@@ -265,10 +269,7 @@ void Foam::polymer::collisionModels::elasticRods::predict
     // place (they accept one with the rods' closest points inside both
     // rods, at an angle of at least 1e-6)
     const scalar rest = dt - t;
-    if (label(pairBudget_.size()) <= pairi)
-    {
-        pairBudget_.resize(grid_.pairs().size(), -GREAT);
-    }
+    sizePairData();
     scalar clearance = 0;
     if
     (
@@ -283,7 +284,7 @@ void Foam::polymer::collisionModels::elasticRods::predict
         return;
     }
     pairBudget_[pairi] = -GREAT;
-    limitDrift(pairi);
+    listClosePair(pairi);
 
     const rodPairCrossing pair
     (
@@ -409,6 +410,7 @@ void Foam::polymer::collisionModels::elasticRods::repredict
     if (++repredictions_ == labelMax)
     {
         std::fill(rodStamp_.begin(), rodStamp_.end(), 0);
+        std::fill(pairStamp_.begin(), pairStamp_.end(), 0);
         repredictions_ = 1;
     }
     rodsToPredict_.clear();
@@ -447,10 +449,7 @@ void Foam::polymer::collisionModels::elasticRods::repredict
         }
     }
 
-    if (pairBudget_.size() < size_t(grid_.pairs().size()))
-    {
-        pairBudget_.resize(grid_.pairs().size(), -GREAT);
-    }
+    sizePairData();
 
     // A pair of two such rods from its first rod only. Each rod's limit
     // anew from its pairs' budgets, the partners' lowered to match
@@ -466,14 +465,25 @@ void Foam::polymer::collisionModels::elasticRods::repredict
                     pair.first() == rod
                  || rodStamp_[pair.first()] != repredictions_
                 )
+             && pairStamp_[pairi] != repredictions_
              && !stillApart(pairi)
             )
             {
+                pairStamp_[pairi] = repredictions_;
                 predict(pairi, t, dt);
             }
             limit = min(limit, limitDrift(pairi, rod));
         }
         rodLimit_[rod] = limit;
+    }
+
+    // The close pairs of the others
+    for (const label rod : rodsToPredict_)
+    {
+        if (rodStamp_[rod] != repredictions_)
+        {
+            predictClosePairs(rod, t, dt);
+        }
     }
 
     if (wall_)
@@ -485,6 +495,52 @@ void Foam::polymer::collisionModels::elasticRods::repredict
                 predictWall(bead, t, dt);
             }
         }
+    }
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::listClosePair
+(
+    const label pairi
+)
+{
+    const labelPair& pair = grid_.pairs()[pairi];
+    if (!(pairListed_[pairi] & 1))
+    {
+        rodClosePairs_[pair.first()].push_back(pairi);
+    }
+    if (!(pairListed_[pairi] & 2))
+    {
+        rodClosePairs_[pair.second()].push_back(pairi);
+    }
+    pairListed_[pairi] = 3;
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::predictClosePairs
+(
+    const label rod,
+    const scalar t,
+    const scalar dt
+)
+{
+    std::vector<label>& close = rodClosePairs_[rod];
+    for (size_t k = 0; k < close.size(); )
+    {
+        const label pairi = close[k];
+        if (pairBudget_[pairi] != -GREAT)
+        {
+            pairListed_[pairi] &= (grid_.pairs()[pairi].first() == rod) ? 2 : 1;
+            close[k] = close.back();
+            close.pop_back();
+            continue;
+        }
+        if (pairStamp_[pairi] != repredictions_)
+        {
+            pairStamp_[pairi] = repredictions_;
+            predict(pairi, t, dt);
+        }
+        ++k;
     }
 }
 
@@ -615,7 +671,14 @@ void Foam::polymer::collisionModels::elasticRods::correct
     }
     grid_.build(rods_, std::move(boxes), lattice_);
     pairBudget_.assign(grid_.pairs().size(), -GREAT);
+    pairListed_.assign(grid_.pairs().size(), 0);
+    pairStamp_.assign(grid_.pairs().size(), 0);
     rodLimit_.assign(rods_.size(), GREAT);
+    rodClosePairs_.resize(rods_.size());
+    for (std::vector<label>& close : rodClosePairs_)
+    {
+        close.clear();
+    }
 
     queue_.reset(nBeads);
     deferredPairs_.clear();

@@ -460,7 +460,12 @@ void Foam::polymer::sweptBoxGrid::build
     pairs_.clear();
     pairShift_.clear();
     std::fill(pairKeys_.begin(), pairKeys_.end(), noKey);
-    rodPairs_.assign(rods.size(), std::vector<label>());
+    // Each rod's list emptied, its storage kept for the next steps
+    rodPairs_.resize(rods.size());
+    for (std::vector<label>& pairsOfRod : rodPairs_)
+    {
+        pairsOfRod.clear();
+    }
 
     // A rod meets only the rods inserted before it: the bounds of those
     // pass over the images that reach none of them
