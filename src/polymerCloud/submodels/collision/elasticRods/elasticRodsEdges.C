@@ -49,12 +49,29 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
 
     // The rod at its image inside the mesh, where the edges are
     const vector shift = wall_->imageShift(0.5*(p0 + p1));
+    const scalar rest = dt - t;
     for
     (
         const label edgei
       : edges.near(boundBox(box.min() + shift, box.max() + shift))
     )
     {
+        // An edge is a rod that does not move: one the rod stays apart
+        // from needs no crossing-time solve
+        scalar clearance;
+        if
+        (
+            sweptApart
+            (
+                {p0 + shift, p1 + shift, edges.start(edgei), edges.end(edgei)},
+                {rest*velocity_[a0], rest*velocity_[a1], Zero, Zero},
+                clearance
+            )
+        )
+        {
+            continue;
+        }
+
         const rodPairCrossing pair
         (
             p0 + shift, p1 + shift, edges.start(edgei), edges.end(edgei),
