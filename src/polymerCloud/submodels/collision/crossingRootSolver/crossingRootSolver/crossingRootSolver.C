@@ -102,9 +102,8 @@ Foam::scalar Foam::polymer::crossingRootSolver::continueCrossing
     bracket& next
 ) const
 {
-    // Not reached: the search was not deferred
-    next.interval = -1;
-    return earliestCrossing(pair, T);
+    // Not reached where deferredCrossing does not defer: the whole search
+    return deferredCrossing(pair, T, next);
 }
 
 

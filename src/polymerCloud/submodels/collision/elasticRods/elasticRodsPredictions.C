@@ -1,0 +1,483 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "elasticRods.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::boundBox Foam::polymer::collisionModels::elasticRods::sweep
+(
+    const label rod,
+    const scalar t,
+    const scalar dt
+) const
+{
+    boundBox box(positionAt(rods_[rod].first(), t));
+    box.add(positionAt(rods_[rod].second(), t));
+    box.add(positionAt(rods_[rod].first(), dt));
+    box.add(positionAt(rods_[rod].second(), dt));
+    return box;
+}
+
+
+Foam::scalar Foam::polymer::collisionModels::elasticRods::growMargin
+(
+    const label rod,
+    const scalar t,
+    const scalar dt
+) const
+{
+    // Half the rod's motion over the rest of the step: an event on its
+    // chain changes its path by a part of that
+    const scalar rest = dt - t;
+    return 0.5*rest*max
+    (
+        mag(velocity_[rods_[rod].first()]),
+        mag(velocity_[rods_[rod].second()])
+    );
+}
+
+
+bool Foam::polymer::collisionModels::elasticRods::sweptApart
+(
+    const FixedList<point, 4>& x,
+    const FixedList<vector, 4>& moved,
+    scalar& clearance
+)
+{
+    const scalar margin = 1e-4*(mag(x[1] - x[0]) + mag(x[3] - x[2]));
+
+    // Swept boxes apart: the extent of rod k's (beads 2k, 2k+1) paths
+    const auto extent = [&](const label k, const direction d)
+    {
+        const scalar p0 = x[2*k][d], p1 = x[2*k + 1][d];
+        const scalar q0 = p0 + moved[2*k][d], q1 = p1 + moved[2*k + 1][d];
+        return std::make_pair
+        (
+            min(min(p0, p1), min(q0, q1)), max(max(p0, p1), max(q0, q1))
+        );
+    };
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        const std::pair<scalar, scalar> a = extent(0, d);
+        const std::pair<scalar, scalar> b = extent(1, d);
+        if (a.first > b.second + margin || b.first > a.second + margin)
+        {
+            clearance = max(a.first - b.second, b.first - a.second) - margin;
+            return true;
+        }
+    }
+
+    // Or the rods' distance now more than they can close: a point of a rod
+    // moves by a weighted mean of its beads' motions, so two points close
+    // by at most the largest relative motion of a bead of each
+    scalar closing = 0;
+    for (label i = 0; i < 2; ++i)
+    {
+        for (label j = 2; j < 4; ++j)
+        {
+            closing = max(closing, magSqr(moved[i] - moved[j]));
+        }
+    }
+    point onA, onB;
+    const scalar distance =
+        linePointRef(x[0], x[1]).nearestDist(linePointRef(x[2], x[3]), onA, onB);
+    const scalar reach = std::sqrt(closing);
+    clearance = distance - (reach + margin);
+    if (clearance > 0)
+    {
+        return true;
+    }
+
+    // Or the distance at the middles of pieces of the rest more than the
+    // rods can close over half a piece: rods close in on each other over
+    // a step, but seldom meet
+    scalar lowest = GREAT;
+    for (label k = 0; k < nApartPieces; ++k)
+    {
+        const scalar s = (k + 0.5)/nApartPieces;
+        lowest = min
+        (
+            lowest,
+            linePointRef(x[0] + s*moved[0], x[1] + s*moved[1]).nearestDist
+            (
+                linePointRef(x[2] + s*moved[2], x[3] + s*moved[3]), onA, onB
+            )
+        );
+        clearance = lowest - (0.5*reach/nApartPieces + margin);
+        if (clearance <= 0)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::predict
+(
+    const label pairi,
+    const scalar t,
+    const scalar dt
+)
+{
+    const labelPair& rodPair = grid_.pairs()[pairi];
+    const label a0 = rods_[rodPair.first()].first();
+    const label a1 = rods_[rodPair.first()].second();
+    const label b0 = rods_[rodPair.second()].first();
+    const label b1 = rods_[rodPair.second()].second();
+    const vector& shift = grid_.pairShift(pairi);
+
+    const FixedList<point, 4> x
+    ({
+        positionAt(a0, t), positionAt(a1, t),
+        positionAt(b0, t) + shift, positionAt(b1, t) + shift
+    });
+    const FixedList<vector, 4> v
+    ({
+        velocity_[a0], velocity_[a1], velocity_[b0], velocity_[b1]
+    });
+
+    // A crossing is a point of both rods at one time: rods that stay
+    // apart need no crossing-time solve. The margin is far beyond the
+    // round-off of the lines' distance at a crossing the root solvers
+    // place (they accept one with the rods' closest points inside both
+    // rods, at an angle of at least 1e-6)
+    const scalar rest = dt - t;
+    sizePairData();
+    scalar clearance = 0;
+    if
+    (
+        sweptApart
+        (
+            x, {rest*v[0], rest*v[1], rest*v[2], rest*v[3]}, clearance
+        )
+    )
+    {
+        pairBudget_[pairi] = clearance + pairDrift(pairi);
+        limitDrift(pairi);
+        return;
+    }
+    pairBudget_[pairi] = -GREAT;
+    listClosePair(pairi);
+
+    const rodPairCrossing pair
+    (
+        x[0], x[1], x[2], x[3], v[0], v[1], v[2], v[3]
+    );
+
+    label side = 0;
+    bool atContact = false;
+    crossingRootSolver::bracket next;
+    const scalar s = contacts_.earliestCrossing
+    (
+        pairi, pair, *rootSolver_, dt - t, side, atContact, next
+    );
+    ++counters_.pairChecks;
+
+    if (debug > 1 && s >= 0 && next.interval < 0)
+    {
+        const FixedList<scalar, 4> c = pair.tripleProductCubic();
+        scalar li, lj;
+        pair.intersection(s, li, lj);
+        Pout<< "    predict pair " << rods_[rodPair.first()] << ' '
+            << rods_[rodPair.second()] << " from " << t << ": s " << s
+            << " V " << c << " lambda " << li << ' ' << lj << endl;
+    }
+
+    if (s >= 0)
+    {
+        event e;
+        e.time = t + s;
+        e.pair = pairi;
+        e.from = t;
+        e.offset = s;
+        e.normal = Zero;
+        e.patch = -1;
+        e.side = side;
+        e.atContact = atContact;
+        e.beads = FixedList<label, 4>({a0, a1, b0, b1});
+        if (next.interval >= 0)
+        {
+            e.deferred = deferredPairs_.size();
+            deferredPairs_.push_back(pair);
+            deferredBrackets_.push_back(next);
+        }
+        queue_.push(e);
+    }
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::continuePrediction
+(
+    const event& e,
+    const scalar dt
+)
+{
+    // The search from the same paths and rest of the step as predicted:
+    // the same crossing as a search that was not deferred
+    crossingRootSolver::bracket& next = deferredBrackets_[e.deferred];
+    label side = e.side;
+    const scalar s = pairContacts::continueCrossing
+    (
+        deferredPairs_[e.deferred], *rootSolver_, dt - e.from, side, next
+    );
+    if (s >= 0)
+    {
+        event found(e);
+        found.time = e.from + s;
+        found.offset = s;
+        found.side = side;
+        if (next.interval < 0)
+        {
+            found.deferred = -1;
+        }
+        queue_.push(found);
+    }
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::predictWall
+(
+    const label bead,
+    const scalar t,
+    const scalar dt
+)
+{
+    // A path shorter than the walls' clearance meets none (as predict
+    // finds), nor does a path that drifts from it by less than the rest
+    const point x(positionAt(bead, t));
+    const scalar path = (dt - t)*mag(velocity_[bead]);
+    const scalar clearance = wall_->clearance(x);
+    if (path < clearance)
+    {
+        wallBudget_[bead] = clearance - path + drift_[bead];
+        return;
+    }
+    wallBudget_[bead] = -GREAT;
+
+    wallModel::impact hit;
+    if (wall_->predict(x, velocity_[bead], dt - t, hit))
+    {
+        event e;
+        e.time = t + hit.time;
+        e.pair = -1 - bead;
+        e.from = t;
+        e.offset = hit.time;
+        e.normal = hit.normal;
+        e.patch = hit.patch;
+        e.side = 0;
+        e.atContact = false;
+        e.beads = FixedList<label, 4>({bead, -1, -1, -1});
+        queue_.push(e);
+    }
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::resetPredictions
+(
+    const label nBeads
+)
+{
+    const label nPairs = grid_.pairs().size();
+    pairBudget_.assign(nPairs, -GREAT);
+    pairListed_.assign(nPairs, 0);
+    pairStamp_.assign(nPairs, 0);
+    rodLimit_.assign(rods_.size(), GREAT);
+    rodClosePairs_.resize(rods_.size());
+    for (std::vector<label>& close : rodClosePairs_)
+    {
+        close.clear();
+    }
+
+    queue_.reset(nBeads);
+    deferredPairs_.clear();
+    deferredBrackets_.clear();
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::stampRods
+(
+    const labelUList& beads
+)
+{
+    rodStamp_.resize(rods_.size(), 0);
+    if (++repredictions_ == labelMax)
+    {
+        std::fill(rodStamp_.begin(), rodStamp_.end(), 0);
+        std::fill(pairStamp_.begin(), pairStamp_.end(), 0);
+        repredictions_ = 1;
+    }
+    rodsToPredict_.clear();
+    for (const label bead : beads)
+    {
+        for (const label rod : rods_.beadRods(bead))
+        {
+            if (rod >= 0 && rodStamp_[rod] != repredictions_)
+            {
+                rodStamp_[rod] = repredictions_;
+                rodsToPredict_.append(rod);
+            }
+        }
+    }
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::growBoxes
+(
+    const scalar t,
+    const scalar dt
+)
+{
+    // A rod with new candidate pairs, or drifted beyond its limit, has
+    // its pairs looked at; the others lose the re-prediction's stamp
+    const bool edges = wall_ && wallEdges_ && wall_->edges().size();
+    rodsBeyondLimit_.clear();
+    for (const label rod : rodsToPredict_)
+    {
+        const boundBox box(sweep(rod, t, dt));
+        const bool grown = grid_.grow(rod, box, growMargin(rod, t, dt));
+        if (edges)
+        {
+            predictEdges(rod, box, t, dt);
+        }
+        if (grown || !(rodDrift(rod) < rodLimit_[rod]))
+        {
+            rodsBeyondLimit_.append(rod);
+        }
+        else
+        {
+            rodStamp_[rod] = 0;
+        }
+    }
+    sizePairData();
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::lookAtPairs
+(
+    const label rod,
+    const scalar t,
+    const scalar dt
+)
+{
+    // A pair of two such rods from its first rod only. The rod's limit
+    // anew from its pairs' budgets, the partners' lowered to match
+    scalar limit = GREAT;
+    for (const label pairi : grid_.rodPairs(rod))
+    {
+        const labelPair& pair = grid_.pairs()[pairi];
+        if
+        (
+            (
+                pair.first() == rod
+             || rodStamp_[pair.first()] != repredictions_
+            )
+         && pairStamp_[pairi] != repredictions_
+         && !stillApart(pairi)
+        )
+        {
+            pairStamp_[pairi] = repredictions_;
+            predict(pairi, t, dt);
+        }
+        limit = min(limit, limitDrift(pairi, rod));
+    }
+    rodLimit_[rod] = limit;
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::repredict
+(
+    const labelUList& beads,
+    const scalar t,
+    const scalar dt
+)
+{
+    stampRods(beads);
+
+    // Grow the broad phase where the new paths leave the rods' boxes
+    growBoxes(t, dt);
+
+    for (const label rod : rodsBeyondLimit_)
+    {
+        lookAtPairs(rod, t, dt);
+    }
+    for (const label rod : rodsToPredict_)
+    {
+        if (rodStamp_[rod] != repredictions_)
+        {
+            predictClosePairs(rod, t, dt);
+        }
+    }
+
+    if (wall_)
+    {
+        for (const label bead : beads)
+        {
+            if (!(drift_[bead] < wallBudget_[bead]))
+            {
+                predictWall(bead, t, dt);
+            }
+        }
+    }
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::listClosePair
+(
+    const label pairi
+)
+{
+    const labelPair& pair = grid_.pairs()[pairi];
+    if (!(pairListed_[pairi] & 1))
+    {
+        rodClosePairs_[pair.first()].push_back(pairi);
+    }
+    if (!(pairListed_[pairi] & 2))
+    {
+        rodClosePairs_[pair.second()].push_back(pairi);
+    }
+    pairListed_[pairi] = 3;
+}
+
+
+void Foam::polymer::collisionModels::elasticRods::predictClosePairs
+(
+    const label rod,
+    const scalar t,
+    const scalar dt
+)
+{
+    std::vector<label>& close = rodClosePairs_[rod];
+    for (size_t k = 0; k < close.size(); )
+    {
+        const label pairi = close[k];
+        if (pairBudget_[pairi] != -GREAT)
+        {
+            pairListed_[pairi] &= (grid_.pairs()[pairi].first() == rod) ? 2 : 1;
+            close[k] = close.back();
+            close.pop_back();
+            continue;
+        }
+        if (pairStamp_[pairi] != repredictions_)
+        {
+            pairStamp_[pairi] = repredictions_;
+            predict(pairi, t, dt);
+        }
+        ++k;
+    }
+}
+
+
+// ************************************************************************* //
