@@ -47,6 +47,7 @@ Foam::polymer::sweptBoxGrid::sweptBoxGrid()
     bounds_(boundBox::invertedBox),
     region_(boundBox::invertedBox),
     cellSize_(1),
+    cellsPerLength_(1),
     nCells_(Zero),
     cells_(),
     pairs_(),
@@ -219,6 +220,7 @@ void Foam::polymer::sweptBoxGrid::layCells(const label nRods)
         }
         cellSize_ *= 1.25;
     }
+    cellsPerLength_ = 1/cellSize_;
 
     const label n = nCells_.x()*nCells_.y()*nCells_.z();
     if (label(cells_.size()) < n)
@@ -251,8 +253,8 @@ void Foam::polymer::sweptBoxGrid::cellRange
     for (direction d = 0; d < vector::nComponents; ++d)
     {
         const scalar origin = region_.min()[d];
-        lower[d] = cell((box.min()[d] - origin)/cellSize_, d);
-        upper[d] = cell((box.max()[d] - origin)/cellSize_, d);
+        lower[d] = cell((box.min()[d] - origin)*cellsPerLength_, d);
+        upper[d] = cell((box.max()[d] - origin)*cellsPerLength_, d);
     }
 }
 
