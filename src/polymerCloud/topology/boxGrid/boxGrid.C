@@ -23,19 +23,19 @@ void Foam::polymer::boxGrid::range
     FixedList<label, 3>& upper
 ) const
 {
+    // The clamped floor, without a call to floor: x truncates to floor(x)
+    // for 0 <= x < n - 1. By multiplication, monotone in the coordinate as
+    // a division is: boxes that overlap share a cell
+    const auto cell = [this](const scalar x, const direction d)
+    {
+        const scalar last = nCells_[d] - 1;
+        return x <= 0 ? label(0) : x >= last ? label(last) : label(x);
+    };
     for (direction d = 0; d < vector::nComponents; ++d)
     {
         const scalar origin = region_.min()[d];
-        lower[d] = min
-        (
-            max(label(std::floor((box.min()[d] - origin)/cellSize_)), 0),
-            nCells_[d] - 1
-        );
-        upper[d] = min
-        (
-            max(label(std::floor((box.max()[d] - origin)/cellSize_)), 0),
-            nCells_[d] - 1
-        );
+        lower[d] = cell((box.min()[d] - origin)*cellsPerLength_, d);
+        upper[d] = cell((box.max()[d] - origin)*cellsPerLength_, d);
     }
 }
 
@@ -47,6 +47,7 @@ Foam::polymer::boxGrid::boxGrid(const UList<boundBox>& boxes)
     region_(boundBox::invertedBox),
     cellSize_(VSMALL),
     nCells_(label(1)),
+    cellsPerLength_(1),
     cells_(),
     stamp_(boxes.size(), -1),
     query_(0)
@@ -78,6 +79,7 @@ Foam::polymer::boxGrid::boxGrid(const UList<boundBox>& boxes)
         cellSize_ *= 1.25;
     }
 
+    cellsPerLength_ = 1/cellSize_;
     cells_.resize(nCells_[0]*nCells_[1]*nCells_[2]);
     forAll(boxes, boxi)
     {
