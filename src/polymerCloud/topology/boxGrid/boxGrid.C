@@ -40,6 +40,31 @@ void Foam::polymer::boxGrid::range
 }
 
 
+template<class Op>
+void Foam::polymer::boxGrid::forEachCell
+(
+    const UList<boundBox>& boxes,
+    const Op& op
+) const
+{
+    forAll(boxes, boxi)
+    {
+        FixedList<label, 3> lower, upper;
+        range(boxes[boxi], lower, upper);
+        for (label i = lower[0]; i <= upper[0]; ++i)
+        {
+            for (label j = lower[1]; j <= upper[1]; ++j)
+            {
+                for (label k = lower[2]; k <= upper[2]; ++k)
+                {
+                    op((i*nCells_[1] + j)*nCells_[2] + k, boxi);
+                }
+            }
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::polymer::boxGrid::boxGrid(const UList<boundBox>& boxes)
@@ -48,7 +73,8 @@ Foam::polymer::boxGrid::boxGrid(const UList<boundBox>& boxes)
     cellSize_(VSMALL),
     nCells_(label(1)),
     cellsPerLength_(1),
-    cells_(),
+    cellStart_(),
+    cellBoxes_(),
     stamp_(boxes.size(), -1),
     query_(0)
 {
@@ -80,22 +106,32 @@ Foam::polymer::boxGrid::boxGrid(const UList<boundBox>& boxes)
     }
 
     cellsPerLength_ = 1/cellSize_;
-    cells_.resize(nCells_[0]*nCells_[1]*nCells_[2]);
-    forAll(boxes, boxi)
-    {
-        FixedList<label, 3> lower, upper;
-        range(boxes[boxi], lower, upper);
-        for (label i = lower[0]; i <= upper[0]; ++i)
+
+    // The boxes of each cell in a row, in the boxes' order: counted, then
+    // placed (two allocations, not one a cell)
+    cellStart_.setSize(nCells_[0]*nCells_[1]*nCells_[2] + 1, 0);
+    forEachCell
+    (
+        boxes,
+        [this](const label celli, const label)
         {
-            for (label j = lower[1]; j <= upper[1]; ++j)
-            {
-                for (label k = lower[2]; k <= upper[2]; ++k)
-                {
-                    cells_[(i*nCells_[1] + j)*nCells_[2] + k].push_back(boxi);
-                }
-            }
+            ++cellStart_[celli + 1];
         }
+    );
+    for (label celli = 1; celli < cellStart_.size(); ++celli)
+    {
+        cellStart_[celli] += cellStart_[celli - 1];
     }
+    cellBoxes_.setSize(cellStart_.last());
+    labelList placed(SubList<label>(cellStart_, cellStart_.size() - 1));
+    forEachCell
+    (
+        boxes,
+        [&](const label celli, const label boxi)
+        {
+            cellBoxes_[placed[celli]++] = boxi;
+        }
+    );
 }
 
 
