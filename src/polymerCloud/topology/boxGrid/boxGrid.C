@@ -73,8 +73,7 @@ Foam::polymer::boxGrid::boxGrid(const UList<boundBox>& boxes)
     cellSize_(VSMALL),
     nCells_(label(1)),
     cellsPerLength_(1),
-    cellStart_(),
-    cellBoxes_(),
+    cells_(),
     stamp_(boxes.size(), -1),
     query_(0)
 {
@@ -107,29 +106,25 @@ Foam::polymer::boxGrid::boxGrid(const UList<boundBox>& boxes)
 
     cellsPerLength_ = 1/cellSize_;
 
-    // The boxes of each cell in a row, in the boxes' order: counted, then
-    // placed (two allocations, not one a cell)
-    cellStart_.setSize(nCells_[0]*nCells_[1]*nCells_[2] + 1, 0);
+    // The boxes of each cell in one packed list, in the boxes' order:
+    // counted, then placed (two allocations, not one a cell)
+    labelList sizes(nCells_[0]*nCells_[1]*nCells_[2], 0);
     forEachCell
     (
         boxes,
-        [this](const label celli, const label)
+        [&](const label celli, const label)
         {
-            ++cellStart_[celli + 1];
+            ++sizes[celli];
         }
     );
-    for (label celli = 1; celli < cellStart_.size(); ++celli)
-    {
-        cellStart_[celli] += cellStart_[celli - 1];
-    }
-    cellBoxes_.setSize(cellStart_.last());
-    labelList placed(SubList<label>(cellStart_, cellStart_.size() - 1));
+    cells_.setSize(sizes);
+    sizes = 0;
     forEachCell
     (
         boxes,
         [&](const label celli, const label boxi)
         {
-            cellBoxes_[placed[celli]++] = boxi;
+            cells_[celli][sizes[celli]++] = boxi;
         }
     );
 }
