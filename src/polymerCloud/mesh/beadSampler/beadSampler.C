@@ -71,6 +71,8 @@ Foam::polymer::beadSampler::beadSampler(const fvMesh& mesh)
     unheldPoints_(),
     hostTets_(tetIndices()),
     hostCoordinates_(),
+    cellOrder_(),
+    cellCounts_(),
     answeredTets_(Pstream::nProcs()),
     answeredCoordinates_(Pstream::nProcs()),
     locatedBeads_(Pstream::nProcs()),
@@ -81,6 +83,28 @@ Foam::polymer::beadSampler::beadSampler(const fvMesh& mesh)
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::polymer::beadSampler::orderByCell(const UList<tetIndices>& hostTet)
+{
+    // Slot 0 for the beads in no cell here, slot c + 1 for cell c
+    cellCounts_.setSize(mesh_.nCells() + 2);
+    cellCounts_ = 0;
+    for (const tetIndices& tet : hostTet)
+    {
+        ++cellCounts_[tet.cell() + 2];
+    }
+    for (label slot = 2; slot < cellCounts_.size(); ++slot)
+    {
+        cellCounts_[slot] += cellCounts_[slot - 1];
+    }
+
+    cellOrder_.setSize(hostTet.size());
+    forAll(hostTet, i)
+    {
+        cellOrder_[cellCounts_[hostTet[i].cell() + 1]++] = i;
+    }
+}
+
 
 Foam::List<Foam::DynamicList<Foam::label>>
 Foam::polymer::beadSampler::byNeighbour(const labelUList& proc) const
@@ -262,31 +286,50 @@ void Foam::polymer::beadSampler::locate(const polymerChains& chains)
 
     // A bead outside this processor's bounding box is in another's mesh,
     // or in none: no search here. The search starts from the tet that
-    // held the bead at the last locate
+    // held the bead at the last locate; the beads are searched in the
+    // order of those tets' cells
     const boundBox& bounds = neighbours_.localBounds();
+    orderByCell(hostTet);
     const label nBeads = x.size();
-    forAll(x, i)
+    forAll(cellOrder_, k)
     {
         // The mesh data of later beads' tets on its way to the cache, in
         // three stages (each needs the one before in the cache)
         for (int stage = 0; stage < 3; ++stage)
         {
-            const label ahead = i + 8*(3 - stage);
+            const label ahead = k + 8*(3 - stage);
             if (ahead < nBeads)
             {
-                locator_.prefetch(hostTet[ahead], stage);
+                locator_.prefetch(hostTet[cellOrder_[ahead]], stage);
             }
         }
 
+        // and the data of later beads themselves: in the cells' order
+        // the beads' own arrays are read at random
+#if defined(__GNUC__)
+        if (k + 32 < nBeads)
+        {
+            const label later = cellOrder_[k + 32];
+            __builtin_prefetch(&x[later]);
+            __builtin_prefetch(&hostTet[later]);
+            __builtin_prefetch(&hostCoordinates_[later]);
+        }
+#endif
+
+        const label i = cellOrder_[k];
         const point p = periodic_.wrap(x[i]);
         hostTet[i] =
             bounds.contains(p)
           ? locator_.findTet(p, hostTet[i], hostCoordinates_[i])
           : tetIndices();
+    }
+
+    forAll(hostTet, i)
+    {
         if (hostTet[i].cell() < 0)
         {
             unheld_.append(i);
-            unheldPoints_.append(p);
+            unheldPoints_.append(periodic_.wrap(x[i]));
         }
         else
         {
@@ -317,7 +360,7 @@ void Foam::polymer::beadSampler::sample
 ) const
 {
     const List<tetIndices>& hostTet = hostTets_.values();
-    forAll(hostTet, i)
+    for (const label i : cellOrder_)
     {
         values[i] =
             (hostTet[i].cell() >= 0)
