@@ -84,7 +84,10 @@ Foam::polymer::beadSampler::beadSampler(const fvMesh& mesh)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::polymer::beadSampler::orderByCell(const UList<tetIndices>& hostTet)
+Foam::label Foam::polymer::beadSampler::orderByCell
+(
+    const UList<tetIndices>& hostTet
+)
 {
     // Slot 0 for the beads in no cell here, slot c + 1 for cell c
     cellCounts_.setSize(mesh_.nCells() + 2);
@@ -103,6 +106,59 @@ void Foam::polymer::beadSampler::orderByCell(const UList<tetIndices>& hostTet)
     {
         cellOrder_[cellCounts_[hostTet[i].cell() + 1]++] = i;
     }
+
+    // Slot 0 now counts to the end of the untracked beads
+    return cellCounts_[0];
+}
+
+
+bool Foam::polymer::beadSampler::prefetches() const
+{
+    // A bead's search reads about a kilobyte of mesh data (its cell's
+    // faces, points and geometry). Fewer beads than this read less than a
+    // processor's cache holds, and stay there from step to step: asking
+    // for it ahead then costs more than it saves (the entropic trap's
+    // 3750 beads); many more (parallelSpeedup's 10^5) wait for memory
+    const label cachedBeads = 16384;
+    return cellOrder_.size() > cachedBeads;
+}
+
+
+void Foam::polymer::beadSampler::prefetchAhead
+(
+    const label k,
+    const int nStages,
+    const UList<vector>& positions
+) const
+{
+    // The mesh data of the tets of the beads 8, 16, ... ahead, a stage
+    // each (a stage needs the one before in the cache)
+    const List<tetIndices>& hostTet = hostTets_.values();
+    const label nBeads = cellOrder_.size();
+    for (int stage = 0; stage < nStages; ++stage)
+    {
+        const label ahead = k + 8*(nStages - stage);
+        if (ahead < nBeads)
+        {
+            locator_.prefetch(hostTet[cellOrder_[ahead]], stage);
+        }
+    }
+
+    // The later beads' own data: in the cells' order the beads' arrays
+    // are read at random
+#if defined(__GNUC__)
+    const label later = k + 8*(nStages + 1);
+    if (later < nBeads)
+    {
+        const label i = cellOrder_[later];
+        if (positions.size())
+        {
+            __builtin_prefetch(&positions[i]);
+        }
+        __builtin_prefetch(&hostTet[i]);
+        __builtin_prefetch(&hostCoordinates_[i]);
+    }
+#endif
 }
 
 
@@ -289,38 +345,39 @@ void Foam::polymer::beadSampler::locate(const polymerChains& chains)
     // held the bead at the last locate; the beads are searched in the
     // order of those tets' cells
     const boundBox& bounds = neighbours_.localBounds();
-    orderByCell(hostTet);
-    const label nBeads = x.size();
+    const label nUntracked = orderByCell(hostTet);
+    const bool prefetching = prefetches();
+    label chaini = 0;
     forAll(cellOrder_, k)
     {
-        // The mesh data of later beads' tets on its way to the cache, in
-        // three stages (each needs the one before in the cache)
-        for (int stage = 0; stage < 3; ++stage)
+        if (prefetching)
         {
-            const label ahead = k + 8*(3 - stage);
-            if (ahead < nBeads)
-            {
-                locator_.prefetch(hostTet[cellOrder_[ahead]], stage);
-            }
+            prefetchAhead(k, 3, x);
         }
-
-        // and the data of later beads themselves: in the cells' order
-        // the beads' own arrays are read at random
-#if defined(__GNUC__)
-        if (k + 32 < nBeads)
-        {
-            const label later = cellOrder_[k + 32];
-            __builtin_prefetch(&x[later]);
-            __builtin_prefetch(&hostTet[later]);
-            __builtin_prefetch(&hostCoordinates_[later]);
-        }
-#endif
 
         const label i = cellOrder_[k];
         const point p = periodic_.wrap(x[i]);
+
+        // A bead with no tet (the first locate, a new chain, a bead back
+        // from outside) starts from the tet of the bead before it in its
+        // chain, a rod length away, rather than a tree search: the
+        // untracked beads come first, in bead order
+        tetIndices start(hostTet[i]);
+        if (k < nUntracked)
+        {
+            while (chains.end(chaini) <= i)
+            {
+                ++chaini;
+            }
+            if (i > chains.start(chaini))
+            {
+                start = hostTet[i - 1];
+            }
+        }
+
         hostTet[i] =
             bounds.contains(p)
-          ? locator_.findTet(p, hostTet[i], hostCoordinates_[i])
+          ? locator_.findTet(p, start, hostCoordinates_[i])
           : tetIndices();
     }
 
@@ -360,8 +417,14 @@ void Foam::polymer::beadSampler::sample
 ) const
 {
     const List<tetIndices>& hostTet = hostTets_.values();
-    for (const label i : cellOrder_)
+    const bool prefetching = prefetches();
+    forAll(cellOrder_, k)
     {
+        if (prefetching)
+        {
+            prefetchAhead(k, 2, UList<vector>());
+        }
+        const label i = cellOrder_[k];
         values[i] =
             (hostTet[i].cell() >= 0)
           ? field.interpolate(hostCoordinates_[i], hostTet[i])

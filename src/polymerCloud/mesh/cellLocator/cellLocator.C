@@ -420,8 +420,10 @@ void Foam::polymer::cellLocator::prefetch
         return;
     }
     const faceList& faces = mesh().faces();
+    const cellList& cells = mesh().cells();
     if (stage == 0)
     {
+        __builtin_prefetch(&cells[celli]);
         __builtin_prefetch(&faces[facei]);
         __builtin_prefetch(&mesh().tetBasePtIs()[facei]);
         __builtin_prefetch(&mesh().cellCentres()[celli]);
@@ -430,6 +432,7 @@ void Foam::polymer::cellLocator::prefetch
     else if (stage == 1)
     {
         __builtin_prefetch(faces[facei].cdata());
+        __builtin_prefetch(cells[celli].cdata());
     }
     else
     {
@@ -446,6 +449,14 @@ void Foam::polymer::cellLocator::prefetch
         __builtin_prefetch(&points[f[base]]);
         __builtin_prefetch(&points[f[(base + tetPti) % n]]);
         __builtin_prefetch(&points[f[(base + tetPti + 1) % n]]);
+
+        // What exitFace reads, for a bead that has left its tet
+        for (const label facej : cells[celli])
+        {
+            __builtin_prefetch(&mesh().faceOwner()[facej]);
+            __builtin_prefetch(&mesh().faceAreas()[facej]);
+            __builtin_prefetch(&mesh().faceCentres()[facej]);
+        }
     }
 #endif
 }
