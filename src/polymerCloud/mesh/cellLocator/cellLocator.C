@@ -41,7 +41,8 @@ Foam::polymer::cellLocator::cellLocator(const polyMesh& mesh)
 :
     MeshObject<polyMesh, GeometricMeshObject, cellLocator>(mesh),
     boxes_(mesh.nCells()),
-    tree_()
+    tree_(),
+    planes_(mesh)
 {
     const pointField& points = mesh.points();
     const cellList& cells = mesh.cells();
@@ -160,44 +161,6 @@ bool Foam::polymer::cellLocator::inCell
 }
 
 
-Foam::label Foam::polymer::cellLocator::exitFace
-(
-    const point& p,
-    const label celli,
-    bool& inside
-) const
-{
-    const vectorField& faceCentres = mesh().faceCentres();
-    const vectorField& faceAreas = mesh().faceAreas();
-    const labelList& owner = mesh().faceOwner();
-    const point& centre = mesh().cellCentres()[celli];
-    const vector toP(p - centre);
-
-    // The face plane the ray centre + t (p - centre) meets first, t > 0:
-    // t = reach/along, compared without dividing (along > 0)
-    label exit = -1;
-    scalar exitReach = 1, exitAlong = 0;
-    for (const label facei : mesh().cells()[celli])
-    {
-        const vector outward =
-            (owner[facei] == celli) ? faceAreas[facei] : -faceAreas[facei];
-        const scalar along = toP & outward;
-        if (along > 0)
-        {
-            const scalar reach = (faceCentres[facei] - centre) & outward;
-            if (exit < 0 || reach*exitAlong < exitReach*along)
-            {
-                exitReach = reach;
-                exitAlong = along;
-                exit = facei;
-            }
-        }
-    }
-    inside = exitReach >= exitAlong;
-    return exit;
-}
-
-
 bool Foam::polymer::cellLocator::inFan
 (
     const point& p,
@@ -233,10 +196,13 @@ Foam::label Foam::polymer::cellLocator::rayWalk
     // face the ray leaves by, or beyond that face in the neighbour's. On
     // convex cells one or two tet tests; anything else (a non-convex or
     // warped cell, a boundary face, a long walk) is left to the walk
+    const vectorField& centres = mesh().cellCentres();
     for (label stepi = 0; stepi < 16; ++stepi)
     {
         bool inside = false;
-        const label facei = exitFace(p, celli, inside);
+        label across = -1;
+        const label facei =
+            planes_.exitFace(p, centres[celli], celli, inside, across);
         if (facei < 0)
         {
             return -1;
@@ -245,12 +211,11 @@ Foam::label Foam::polymer::cellLocator::rayWalk
         {
             return inFan(p, celli, facei, tet, coordinates) ? celli : -1;
         }
-        if (!mesh().isInternalFace(facei))
+        if (across < 0)
         {
             return -1;
         }
-        const label owner = mesh().faceOwner()[facei];
-        celli = (owner == celli) ? mesh().faceNeighbour()[facei] : owner;
+        celli = across;
     }
     return -1;
 }
@@ -420,10 +385,9 @@ void Foam::polymer::cellLocator::prefetch
         return;
     }
     const faceList& faces = mesh().faces();
-    const cellList& cells = mesh().cells();
     if (stage == 0)
     {
-        __builtin_prefetch(&cells[celli]);
+        planes_.prefetch(celli, 0);
         __builtin_prefetch(&faces[facei]);
         __builtin_prefetch(&mesh().tetBasePtIs()[facei]);
         __builtin_prefetch(&mesh().cellCentres()[celli]);
@@ -432,7 +396,7 @@ void Foam::polymer::cellLocator::prefetch
     else if (stage == 1)
     {
         __builtin_prefetch(faces[facei].cdata());
-        __builtin_prefetch(cells[celli].cdata());
+        planes_.prefetch(celli, 1);
     }
     else
     {
@@ -449,14 +413,6 @@ void Foam::polymer::cellLocator::prefetch
         __builtin_prefetch(&points[f[base]]);
         __builtin_prefetch(&points[f[(base + tetPti) % n]]);
         __builtin_prefetch(&points[f[(base + tetPti + 1) % n]]);
-
-        // What exitFace reads, for a bead that has left its tet
-        for (const label facej : cells[celli])
-        {
-            __builtin_prefetch(&mesh().faceOwner()[facej]);
-            __builtin_prefetch(&mesh().faceAreas()[facej]);
-            __builtin_prefetch(&mesh().faceCentres()[facej]);
-        }
     }
 #endif
 }
