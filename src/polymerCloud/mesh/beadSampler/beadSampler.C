@@ -162,6 +162,57 @@ void Foam::polymer::beadSampler::prefetchAhead
 }
 
 
+void Foam::polymer::beadSampler::locateHere
+(
+    const polymerChains& chains,
+    List<tetIndices>& hostTet
+)
+{
+    const List<vector>& x = chains.positions();
+
+    // A bead outside this processor's bounding box is in another's mesh,
+    // or in none: no search here. The search starts from the tet that
+    // held the bead at the last locate; the beads are searched in the
+    // order of those tets' cells
+    const boundBox& bounds = neighbours_.localBounds();
+    const label nUntracked = orderByCell(hostTet);
+    const bool prefetching = prefetches();
+    label chaini = 0;
+    forAll(cellOrder_, k)
+    {
+        if (prefetching)
+        {
+            prefetchAhead(k, 3, x);
+        }
+
+        const label i = cellOrder_[k];
+        const point p = periodic_.wrap(x[i]);
+
+        // A bead with no tet (the first locate, a new chain, a bead back
+        // from outside) starts from the tet of the bead before it in its
+        // chain, a rod length away, rather than a tree search: the
+        // untracked beads come first, in bead order
+        tetIndices start(hostTet[i]);
+        if (k < nUntracked)
+        {
+            while (chains.end(chaini) <= i)
+            {
+                ++chaini;
+            }
+            if (i > chains.start(chaini))
+            {
+                start = hostTet[i - 1];
+            }
+        }
+
+        hostTet[i] =
+            bounds.contains(p)
+          ? locator_.findTet(p, start, hostCoordinates_[i])
+          : tetIndices();
+    }
+}
+
+
 Foam::List<Foam::DynamicList<Foam::label>>
 Foam::polymer::beadSampler::byNeighbour(const labelUList& proc) const
 {
@@ -340,46 +391,7 @@ void Foam::polymer::beadSampler::locate(const polymerChains& chains)
         locatedBeads_[proci].clear();
     }
 
-    // A bead outside this processor's bounding box is in another's mesh,
-    // or in none: no search here. The search starts from the tet that
-    // held the bead at the last locate; the beads are searched in the
-    // order of those tets' cells
-    const boundBox& bounds = neighbours_.localBounds();
-    const label nUntracked = orderByCell(hostTet);
-    const bool prefetching = prefetches();
-    label chaini = 0;
-    forAll(cellOrder_, k)
-    {
-        if (prefetching)
-        {
-            prefetchAhead(k, 3, x);
-        }
-
-        const label i = cellOrder_[k];
-        const point p = periodic_.wrap(x[i]);
-
-        // A bead with no tet (the first locate, a new chain, a bead back
-        // from outside) starts from the tet of the bead before it in its
-        // chain, a rod length away, rather than a tree search: the
-        // untracked beads come first, in bead order
-        tetIndices start(hostTet[i]);
-        if (k < nUntracked)
-        {
-            while (chains.end(chaini) <= i)
-            {
-                ++chaini;
-            }
-            if (i > chains.start(chaini))
-            {
-                start = hostTet[i - 1];
-            }
-        }
-
-        hostTet[i] =
-            bounds.contains(p)
-          ? locator_.findTet(p, start, hostCoordinates_[i])
-          : tetIndices();
-    }
+    locateHere(chains, hostTet);
 
     forAll(hostTet, i)
     {

@@ -221,6 +221,19 @@ Foam::label Foam::polymer::cellLocator::rayWalk
 }
 
 
+bool Foam::polymer::cellLocator::nearCell
+(
+    const point& p,
+    const label celli
+) const
+{
+    // Within two of the cell's sizes of its box
+    const treeBoundBox& box = boxes_[celli];
+    const vector reach(2*box.span());
+    return boundBox(box.min() - reach, box.max() + reach).contains(p);
+}
+
+
 Foam::label Foam::polymer::cellLocator::walk
 (
     const point& p,
@@ -354,7 +367,11 @@ Foam::tetIndices Foam::polymer::cellLocator::findTet
             return tet;
         }
         tet = previous;
-        if (walk(p, previous.cell(), tet, coordinates) >= 0)
+        if
+        (
+            nearCell(p, previous.cell())
+         && walk(p, previous.cell(), tet, coordinates) >= 0
+        )
         {
             return tet;
         }
