@@ -115,10 +115,9 @@ Foam::label Foam::polymer::beadSampler::orderByCell
 bool Foam::polymer::beadSampler::prefetches() const
 {
     // A bead's search reads about a kilobyte of mesh data (its cell's
-    // faces, points and geometry). Fewer beads than this read less than a
-    // processor's cache holds, and stay there from step to step: asking
-    // for it ahead then costs more than it saves (the entropic trap's
-    // 3750 beads); many more (parallelSpeedup's 10^5) wait for memory
+    // faces, points and geometry). The data of fewer beads than this fit
+    // in a processor's cache and stay there from step to step, and asking
+    // for them ahead only adds work; those of many more wait for memory
     const label cachedBeads = 16384;
     return cellOrder_.size() > cachedBeads;
 }
