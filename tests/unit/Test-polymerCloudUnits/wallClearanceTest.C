@@ -16,6 +16,8 @@ Description
     - at 20000 random points of the fluid the clearance is never more than
       the distance to the nearest face, and never less than that distance
       (up to the search's cap) less a voxel's diagonal;
+    - the clearance from the channel's convex edges (its corner, x = y = 5)
+      likewise, against the distance to the nearest of those edges;
     - of 20000 random paths from those points, none shorter than its
       start's clearance enters a face, and the wall model's impacts are
       the face search's, path for path.
@@ -78,6 +80,40 @@ TEST(wallClearance, WithinAVoxelOfTheNearestFace)
         positive += clearance(p) > 0;
     }
     EXPECT_GT(positive, 5000);
+}
+
+
+TEST(wallClearance, FromTheEdgesWithinAVoxelOfTheNearestEdge)
+{
+    const fvMesh* mesh = meshOf("wallL");
+    ASSERT_TRUE(mesh);
+    autoPtr<wallModel> wall = newWall(*mesh, "meshFaces");
+    const wallEdges& edges = wall->edges();
+    ASSERT_EQ(edges.size(), 5);
+    const wallClearance clearance(wall->faces(), edges);
+
+    // The corner's edges make up the segment x = y = 5, 0 < z < 5
+    const scalar diagonal = std::sqrt(3.0)*clearance.voxelSize();
+    std::mt19937_64 engine(13);
+    label positive = 0, capped = 0;
+    for (label i = 0; i < 20000; ++i)
+    {
+        const point p(fluidPoint(engine));
+        const point onCorner(5, 5, min(max(p.z(), scalar(0)), scalar(5)));
+        const scalar distance = mag(p - onCorner);
+        ASSERT_LE(clearance(p), distance) << "at " << str(p);
+        ASSERT_GE
+        (
+            clearance(p),
+            (min(distance, 4*diagonal) - diagonal)*(1 - 1e-6) - 1e-12
+        ) << "at " << str(p);
+        // Not the faces' clearance: far from the corner, beyond the
+        // search's cap, however near a face
+        capped += (distance > 5*diagonal && clearance(p) > 2.5*diagonal);
+        positive += clearance(p) > 0;
+    }
+    EXPECT_GT(positive, 15000);
+    EXPECT_GT(capped, 5000);
 }
 
 

@@ -64,7 +64,10 @@ Foam::scalar Foam::polymer::wallClearance::voxelClearance
     // Beyond eight half diagonals the nearest face is not sought
     const scalar halfDiagonal = 0.5*std::sqrt(3.0)*voxelSize_;
     const scalar searched = 8*halfDiagonal;
-    const pointIndexHit nearest = faces_.nearest(centre, sqr(searched));
+    const pointIndexHit nearest =
+        edges_
+      ? edges_->nearest(centre, sqr(searched))
+      : faces_.nearest(centre, sqr(searched));
     const scalar distance =
         nearest.hit() ? mag(nearest.hitPoint() - centre) : searched;
 
@@ -79,6 +82,7 @@ Foam::scalar Foam::polymer::wallClearance::voxelClearance
 Foam::polymer::wallClearance::wallClearance(const boundaryFaces& faces)
 :
     faces_(faces),
+    edges_(nullptr),
     bounds_(),
     voxelSize_(1),
     nVoxels_(Zero),
@@ -89,6 +93,19 @@ Foam::polymer::wallClearance::wallClearance(const boundaryFaces& faces)
         layVoxels(faces);
         clearance_.setSize(nVoxels_.x()*nVoxels_.y()*nVoxels_.z(), -1);
     }
+}
+
+
+Foam::polymer::wallClearance::wallClearance
+(
+    const boundaryFaces& faces,
+    const wallEdges& edges
+)
+:
+    wallClearance(faces)
+{
+    // The same voxels: the edges lie on the faces
+    edges_ = &edges;
 }
 
 

@@ -120,4 +120,18 @@ Foam::labelList Foam::polymer::wallEdges::near(const boundBox& box) const
 }
 
 
+Foam::pointIndexHit Foam::polymer::wallEdges::nearest
+(
+    const point& p,
+    const scalar distSqr
+) const
+{
+    if (!tree_)
+    {
+        return pointIndexHit();
+    }
+    return tree_->findNearest(p, distSqr);
+}
+
+
 // ************************************************************************* //

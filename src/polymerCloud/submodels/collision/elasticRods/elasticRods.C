@@ -107,6 +107,7 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     pairListed_(),
     pairStamp_(),
     wallBudget_(),
+    edgeBudget_(),
     grid_(),
     queue_(),
     deferredPairs_(),
@@ -242,6 +243,8 @@ void Foam::polymer::collisionModels::elasticRods::correct
     drift_ = 0;
     wallBudget_.resize(nBeads);
     wallBudget_ = -GREAT;
+    edgeBudget_.resize(rods_.size());
+    edgeBudget_ = -GREAT;
 
     // Broad phase: rods whose swept boxes, with the margin that an event
     // on their chains grows them by, overlap. Most rods of a crowded

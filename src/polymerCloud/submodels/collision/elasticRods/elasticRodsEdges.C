@@ -46,10 +46,30 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
     const label a1 = rods_[rod].second();
     const point p0 = positionAt(a0, t);
     const point p1 = positionAt(a1, t);
+    const scalar rest = dt - t;
 
     // The rod at its image inside the mesh, where the edges are
     const vector shift = wall_->imageShift(0.5*(p0 + p1));
-    const scalar rest = dt - t;
+
+    // A rod whose path stays farther from every edge meets none, and
+    // needs no look-up in the edges' tree: a point of the rod is farther
+    // from the edges than the beads' clearances less its distances from
+    // the beads, so at least (c0 + c1 - |p1 - p0|)/2, and strays from
+    // there by at most its beads' larger motion over the rest
+    const scalar clearance =
+        0.5
+       *(
+            wall_->edgeClearance(p0 + shift)
+          + wall_->edgeClearance(p1 + shift)
+          - mag(p1 - p0)
+        )
+      - rest*max(mag(velocity_[a0]), mag(velocity_[a1]));
+    if (clearance > 0)
+    {
+        edgeBudget_[rod] = clearance + rodDrift(rod);
+        return;
+    }
+    edgeBudget_[rod] = -GREAT;
     for
     (
         const label edgei

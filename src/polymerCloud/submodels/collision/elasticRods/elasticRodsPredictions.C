@@ -348,7 +348,7 @@ void Foam::polymer::collisionModels::elasticRods::growBoxes
     {
         const boundBox box(sweep(rod, t, dt));
         const bool grown = grid_.grow(rod, box, growMargin(rod, t, dt));
-        if (edges)
+        if (edges && !(rodDrift(rod) < edgeBudget_[rod]))
         {
             predictEdges(rod, box, t, dt);
         }

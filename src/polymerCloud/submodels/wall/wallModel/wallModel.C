@@ -46,7 +46,8 @@ Foam::polymer::wallModel::wallModel
     rejectedBeads_(),
     faces_(),
     edges_(),
-    clearance_()
+    clearance_(),
+    edgeClearance_()
 {
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
 
@@ -191,6 +192,16 @@ bool Foam::polymer::wallModel::faceImpact
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::polymer::wallModel::edgeClearance(const point& x) const
+{
+    if (!edgeClearance_.valid())
+    {
+        edgeClearance_.reset(new wallClearance(faces(), edges()));
+    }
+    return edgeClearance_()(x);
+}
+
+
 const Foam::polymer::wallEdges& Foam::polymer::wallModel::edges() const
 {
     if (!edges_.valid())
@@ -210,6 +221,7 @@ const Foam::polymer::wallEdges& Foam::polymer::wallModel::edges() const
 void Foam::polymer::wallModel::setReach(const scalar reach)
 {
     faces_.reset(new boundaryFaces(mesh_, reach));
+    edgeClearance_.clear();
     edges_.clear();
     clearance_.clear();
 }
