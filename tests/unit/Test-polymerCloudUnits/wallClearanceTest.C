@@ -61,7 +61,7 @@ TEST(wallClearance, WithinAVoxelOfTheNearestFace)
     EXPECT_GE(clearance.size(), 4096);
 
     // From the construction: the distance less a voxel's diagonal, up to
-    // the search's cap of 16 half diagonals
+    // the search's cap of eight half diagonals
     const scalar diagonal = std::sqrt(3.0)*clearance.voxelSize();
     std::mt19937_64 engine(7);
     label positive = 0;
@@ -75,7 +75,7 @@ TEST(wallClearance, WithinAVoxelOfTheNearestFace)
         ASSERT_GE
         (
             clearance(p),
-            (min(distance, 8*diagonal) - diagonal)*(1 - 1e-6) - 1e-12
+            (min(distance, 4*diagonal) - diagonal)*(1 - 1e-6) - 1e-12
         ) << "at " << str(p);
         positive += clearance(p) > 0;
     }
@@ -105,15 +105,13 @@ TEST(wallClearance, FromTheEdgesWithinAVoxelOfTheNearestEdge)
         ASSERT_GE
         (
             clearance(p),
-            (min(distance, 8*diagonal) - diagonal)*(1 - 1e-6) - 1e-12
+            (min(distance, 4*diagonal) - diagonal)*(1 - 1e-6) - 1e-12
         ) << "at " << str(p);
         // Not the faces' clearance: far from the corner, beyond the
         // search's cap, however near a face
-        capped += (distance > 9*diagonal && clearance(p) > 6.5*diagonal);
+        capped += (distance > 5*diagonal && clearance(p) > 2.5*diagonal);
         positive += clearance(p) > 0;
     }
-    Info<< "edge clearance: voxel " << clearance.voxelSize() << ", "
-        << positive << " positive, " << capped << " capped of 20000" << endl;
     EXPECT_GT(positive, 15000);
     EXPECT_GT(capped, 5000);
 }

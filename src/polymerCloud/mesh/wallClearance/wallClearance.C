@@ -21,9 +21,9 @@ void Foam::polymer::wallClearance::layVoxels(const boundaryFaces& faces)
     bounds_ = boundBox(faces.points(), false);
     const vector span(bounds_.span());
 
-    // Cubes, about 64 a face but at least eight across the thinnest
+    // Cubes, about eight a face but at least eight across the thinnest
     // direction that is not flat (a slit), at most maxVoxels
-    const scalar wanted = max(64*faces.size(), 4096);
+    const scalar wanted = max(8*faces.size(), 4096);
     const scalar maxVoxels = 2097152;
     scalar volume = 1, thinnest = GREAT;
     label nThick = 0;
@@ -61,9 +61,9 @@ Foam::scalar Foam::polymer::wallClearance::voxelClearance
         bounds_.min() + voxelSize_*vector(i + 0.5, j + 0.5, k + 0.5)
     );
 
-    // Beyond 16 half diagonals the nearest face is not sought
+    // Beyond eight half diagonals the nearest face is not sought
     const scalar halfDiagonal = 0.5*std::sqrt(3.0)*voxelSize_;
-    const scalar searched = 16*halfDiagonal;
+    const scalar searched = 8*halfDiagonal;
     const pointIndexHit nearest =
         edges_
       ? edges_->nearest(centre, sqr(searched))
