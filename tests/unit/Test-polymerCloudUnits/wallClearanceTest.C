@@ -107,8 +107,8 @@ TEST(wallClearance, FromTheEdgesWithinAVoxelOfTheNearestEdge)
             clearance(p),
             (min(distance, 4*diagonal) - diagonal)*(1 - 1e-6) - 1e-12
         ) << "at " << str(p);
-        // Not the faces' clearance: far from the corner, beyond the
-        // search's cap, however near a face
+        // The edges' clearance, not the faces': far from the corner it
+        // reaches the search's cap, however near the point is to a face
         capped += (distance > 5*diagonal && clearance(p) > 2.5*diagonal);
         positive += clearance(p) > 0;
     }

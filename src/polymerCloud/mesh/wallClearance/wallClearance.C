@@ -61,7 +61,7 @@ Foam::scalar Foam::polymer::wallClearance::voxelClearance
         bounds_.min() + voxelSize_*vector(i + 0.5, j + 0.5, k + 0.5)
     );
 
-    // Beyond eight half diagonals the nearest face is not sought
+    // Beyond eight half diagonals the nearest face (edge) is not sought
     const scalar halfDiagonal = 0.5*std::sqrt(3.0)*voxelSize_;
     const scalar searched = 8*halfDiagonal;
     const pointIndexHit nearest =
