@@ -250,6 +250,27 @@ void Foam::polymer::boundaryFaces::buildTree()
 
     facePatch_.reset(new primitiveFacePatch(faces_, points_));
 
+    centres_.setSize(faces_.size());
+    normals_.setSize(faces_.size());
+    warps_.setSize(faces_.size());
+    radii_.setSize(faces_.size());
+    forAll(faces_, facei)
+    {
+        const point centre(faces_[facei].centre(points_));
+        const vector normal(areas_[facei]/max(mag(areas_[facei]), VSMALL));
+        scalar warp = 0, radius = 0;
+        for (const label pointi : faces_[facei])
+        {
+            const vector d(points_[pointi] - centre);
+            warp = max(warp, mag(normal & d));
+            radius = max(radius, mag(d));
+        }
+        centres_[facei] = centre;
+        normals_[facei] = normal;
+        warps_[facei] = warp;
+        radii_[facei] = radius;
+    }
+
     const treeBoundBox bb(treeBounds(points_));
     tree_.reset
     (
@@ -278,6 +299,10 @@ Foam::polymer::boundaryFaces::boundaryFaces
     areas_(),
     patch_(),
     nOwnFaces_(0),
+    centres_(),
+    normals_(),
+    warps_(),
+    radii_(),
     facePatch_(),
     tree_()
 {
@@ -300,6 +325,33 @@ Foam::pointIndexHit Foam::polymer::boundaryFaces::firstEntered
         return pointIndexHit();
     }
     return tree_->findLine(start, end, enteringFaceOp(tree_(), areas_));
+}
+
+
+Foam::scalar Foam::polymer::boundaryFaces::clearance
+(
+    const point& p,
+    const scalar reach
+) const
+{
+    // A face nearer than reach has a point in the cube of half-width reach
+    // about p, so its bounds overlap the cube and the tree lists it
+    if (!tree_.valid() || !(reach > 0))
+    {
+        return max(reach, 0);
+    }
+    const vector half(vector::uniform(reach));
+    scalar lowest = reach;
+    for (const label facei : tree_->findBox(treeBoundBox(p - half, p + half)))
+    {
+        const vector d(p - centres_[facei]);
+        lowest = min
+        (
+            lowest,
+            max(mag(normals_[facei] & d) - warps_[facei], mag(d) - radii_[facei])
+        );
+    }
+    return max(lowest, 0);
 }
 
 

@@ -256,10 +256,13 @@ void Foam::polymer::collisionModels::elasticRods::predictWall
 )
 {
     // A path shorter than the walls' clearance meets none (as predict
-    // finds), nor does a path that drifts from it by less than the rest
+    // finds), nor does a path that drifts from it by less than the rest.
+    // Near a wall the clearance is sought down to twice the path: a bead
+    // held against a wall by its chain is predicted again at every
+    // impulse on the chain
     const point x(positionAt(bead, t));
     const scalar path = (dt - t)*mag(velocity_[bead]);
-    const scalar clearance = wall_->clearance(x);
+    const scalar clearance = wall_->nearClearance(x, 2*path);
     if (path < clearance)
     {
         wallBudget_[bead] = clearance - path + drift_[bead];

@@ -133,6 +133,30 @@ Foam::scalar Foam::polymer::wallModel::faceClearance(const point& x) const
 }
 
 
+Foam::scalar Foam::polymer::wallModel::faceDistance
+(
+    const point& x,
+    const scalar reach
+) const
+{
+    const scalar voxels = faceClearance(x);
+    if (!(voxels < reach))
+    {
+        return voxels;
+    }
+
+    // Less a relative 1e-6 and the round-off of the coordinates, so that
+    // no path shorter enters a face in the path search's own arithmetic
+    const point image(periodic_.wrap(x));
+    const scalar bound = faces().clearance(image, reach);
+    return max
+    (
+        voxels,
+        bound*(1 - 1e-6) - 1e-9*(cmptMax(cmptMag(image)) + reach)
+    );
+}
+
+
 bool Foam::polymer::wallModel::faceImpact
 (
     const point& x,
