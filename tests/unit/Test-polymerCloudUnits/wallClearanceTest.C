@@ -23,7 +23,7 @@ Description
       the face search's, path for path;
     - the faces' bounds (boundaryFaces::clearance) are never farther than
       the nearest face, nor than the reach asked; no path shorter than the
-      wall model's nearClearance enters a face, and where the voxels give
+      wall model's clearance enters a face, and where the voxels give
       less than half the distance to the walls (within the reach asked),
       it gives more for at least nine points in ten (flat walls: the
       planes' distance).
@@ -168,6 +168,7 @@ TEST(wallClearance, NearTheWallsNoPathWithinItEntersAFace)
     ASSERT_TRUE(mesh);
     const boundaryFaces faces(*mesh, 0);
     autoPtr<wallModel> wall = newWall(*mesh, "meshFaces");
+    const wallClearance voxels(wall->faces());
 
     std::mt19937_64 engine(17);
     std::normal_distribution<scalar> normal(0, 1);
@@ -187,11 +188,11 @@ TEST(wallClearance, NearTheWallsNoPathWithinItEntersAFace)
         ASSERT_LE(bound, min(distance, reach) + 1e-12) << "at " << str(p);
 
         // The wall model's: paths about it, up to twice it
-        const scalar clearance = wall->nearClearance(p, reach);
-        if (wall->clearance(p) < 0.5*min(distance, reach))
+        const scalar clearance = wall->clearance(p, reach);
+        if (voxels(p) < 0.5*min(distance, reach))
         {
             ++nearWalls;
-            found += clearance > wall->clearance(p);
+            found += clearance > voxels(p);
         }
         vector direction(normal(engine), normal(engine), normal(engine));
         direction /= mag(direction);

@@ -262,7 +262,7 @@ void Foam::polymer::collisionModels::elasticRods::predictWall
     // impulse on the chain
     const point x(positionAt(bead, t));
     const scalar path = (dt - t)*mag(velocity_[bead]);
-    const scalar clearance = wall_->nearClearance(x, 2*path);
+    const scalar clearance = wall_->clearance(x, 2*path);
     if (path < clearance)
     {
         wallBudget_[bead] = clearance - path + drift_[bead];

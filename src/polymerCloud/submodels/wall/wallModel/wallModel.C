@@ -123,13 +123,20 @@ const Foam::polymer::boundaryFaces& Foam::polymer::wallModel::faces() const
 }
 
 
-Foam::scalar Foam::polymer::wallModel::faceClearance(const point& x) const
+const Foam::polymer::wallClearance&
+Foam::polymer::wallModel::faceVoxels() const
 {
     if (!clearance_.valid())
     {
         clearance_.reset(new wallClearance(faces()));
     }
-    return clearance_()(periodic_.wrap(x));
+    return clearance_();
+}
+
+
+Foam::scalar Foam::polymer::wallModel::faceClearance(const point& x) const
+{
+    return faceVoxels()(periodic_.wrap(x));
 }
 
 
@@ -139,7 +146,8 @@ Foam::scalar Foam::polymer::wallModel::faceDistance
     const scalar reach
 ) const
 {
-    const scalar voxels = faceClearance(x);
+    const point image(periodic_.wrap(x));
+    const scalar voxels = faceVoxels()(image);
     if (!(voxels < reach))
     {
         return voxels;
@@ -147,7 +155,6 @@ Foam::scalar Foam::polymer::wallModel::faceDistance
 
     // Less a relative 1e-6 and the round-off of the coordinates, so that
     // no path shorter enters a face in the path search's own arithmetic
-    const point image(periodic_.wrap(x));
     const scalar bound = faces().clearance(image, reach);
     return max
     (
