@@ -75,12 +75,19 @@ bool Foam::polymer::cellLocator::inTet
 {
     // cellPointWeight's acceptance: degenerate tets skipped, coordinates
     // down to -SMALL accepted (a point on a face shared by two tets or
-    // two cells is in both)
-    const scalar tol = SMALL;
-    const scalar det = tet.tet(mesh).pointToBarycentric(p, coordinates);
-    return
-        mag(det/mesh.cellVolumes()[tet.cell()]) > tol
-     && cmptMin(coordinates) + tol > 0;
+    // two cells is in both). A tet is degenerate by its volume relative
+    // to its cell's alone: tetrahedron::pointToBarycentric also gives
+    // coordinates of 1/4 for a tet whose edge determinant is below SMALL
+    // in absolute terms, which is every tet of a mesh in metres with
+    // cells of a micrometre. Its arithmetic otherwise (tetTransform)
+    const tetPointRef points(tet.tet(mesh));
+    const scalar det = Foam::det(tetTransform::edgeMatrix(points));
+    if (!(mag(det/mesh.cellVolumes()[tet.cell()]) > SMALL))
+    {
+        return false;
+    }
+    coordinates = tetTransform(points, det).coordinates(p);
+    return holds(coordinates);
 }
 
 
@@ -342,7 +349,7 @@ Foam::tetIndices Foam::polymer::cellLocator::findTet
 }
 
 
-Foam::tetIndices Foam::polymer::cellLocator::findTet
+Foam::tetIndices Foam::polymer::cellLocator::search
 (
     const point& p,
     const tetIndices& previous,
@@ -352,16 +359,8 @@ Foam::tetIndices Foam::polymer::cellLocator::findTet
     tetIndices tet(previous);
     if (previous.cell() >= 0)
     {
-        // Most beads are still in the tet that held them; of the others,
-        // most are found along the ray from their cell's centre
-        if
-        (
-            isTetOf(mesh(), previous, previous.cell())
-         && inTet(mesh(), p, previous, coordinates)
-        )
-        {
-            return tet;
-        }
+        // Most of the beads that left their tet are found along the ray
+        // from their cell's centre
         if (rayWalk(p, previous.cell(), tet, coordinates) >= 0)
         {
             return tet;
@@ -385,6 +384,37 @@ Foam::tetIndices Foam::polymer::cellLocator::findTet
         return tetIndices();
     }
     return tet;
+}
+
+
+Foam::tetIndices Foam::polymer::cellLocator::findTet
+(
+    const point& p,
+    const tetIndices& previous,
+    barycentric& coordinates
+) const
+{
+    // Most beads are still in the tet that held them
+    if
+    (
+        previous.cell() >= 0
+     && isTetOf(mesh(), previous, previous.cell())
+     && inTet(mesh(), p, previous, coordinates)
+    )
+    {
+        return previous;
+    }
+    return search(p, previous, coordinates);
+}
+
+
+Foam::polymer::tetTransform Foam::polymer::cellLocator::transform
+(
+    const tetIndices& tet
+) const
+{
+    const tetPointRef points(tet.tet(mesh()));
+    return tetTransform(points, det(tetTransform::edgeMatrix(points)));
 }
 
 
