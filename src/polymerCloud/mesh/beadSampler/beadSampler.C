@@ -71,6 +71,9 @@ Foam::polymer::beadSampler::beadSampler(const fvMesh& mesh)
     unheldPoints_(),
     hostTets_(tetIndices()),
     hostCoordinates_(),
+    hostTransforms_(tetTransform()),
+    leavers_(),
+    orderedLeavers_(),
     cellOrder_(),
     cellCounts_(),
     answeredTets_(Pstream::nProcs()),
@@ -112,6 +115,27 @@ Foam::label Foam::polymer::beadSampler::orderByCell
 }
 
 
+void Foam::polymer::beadSampler::orderLeavers()
+{
+    // A counting sort, stable, as orderByCell's
+    cellCounts_.setSize(mesh_.nCells() + 1);
+    cellCounts_ = 0;
+    for (const leaver& l : leavers_)
+    {
+        ++cellCounts_[l.tet.cell() + 1];
+    }
+    for (label slot = 1; slot < cellCounts_.size(); ++slot)
+    {
+        cellCounts_[slot] += cellCounts_[slot - 1];
+    }
+    orderedLeavers_.setSize(leavers_.size());
+    for (const leaver& l : leavers_)
+    {
+        orderedLeavers_[cellCounts_[l.tet.cell()]++] = l;
+    }
+}
+
+
 bool Foam::polymer::beadSampler::prefetches() const
 {
     // A bead's search reads about a kilobyte of mesh data (its cell's
@@ -123,40 +147,47 @@ bool Foam::polymer::beadSampler::prefetches() const
 }
 
 
-void Foam::polymer::beadSampler::prefetchAhead
+void Foam::polymer::beadSampler::prefetchMesh
 (
+    const labelUList& order,
     const label k,
-    const int nStages,
-    const UList<vector>& positions
+    const int nStages
 ) const
 {
-    // The mesh data of the tets of the beads 8, 16, ... ahead, a stage
-    // each (a stage needs the one before in the cache)
+    // The mesh data of the tets of the beads 8, 16, ... places ahead in
+    // the order, a stage each (a stage needs the one before in the
+    // cache), and those beads' own tet and coordinates: in the cells'
+    // order the beads' arrays are read at random
     const List<tetIndices>& hostTet = hostTets_.values();
-    const label nBeads = cellOrder_.size();
+    const label nBeads = order.size();
     for (int stage = 0; stage < nStages; ++stage)
     {
         const label ahead = k + 8*(nStages - stage);
         if (ahead < nBeads)
         {
-            locator_.prefetch(hostTet[cellOrder_[ahead]], stage);
+            locator_.prefetch(hostTet[order[ahead]], stage);
         }
     }
-
-    // The later beads' own data: in the cells' order the beads' arrays
-    // are read at random
 #if defined(__GNUC__)
     const label later = k + 8*(nStages + 1);
     if (later < nBeads)
     {
-        const label i = cellOrder_[later];
-        if (positions.size())
-        {
-            __builtin_prefetch(&positions[i]);
-        }
-        __builtin_prefetch(&hostTet[i]);
-        __builtin_prefetch(&hostCoordinates_[i]);
+        __builtin_prefetch(&hostTet[order[later]]);
+        __builtin_prefetch(&hostCoordinates_[order[later]]);
     }
+#endif
+}
+
+
+void Foam::polymer::beadSampler::prefetchBead(const label i) const
+{
+#if defined(__GNUC__)
+    const char* transform =
+        reinterpret_cast<const char*>(&hostTransforms_.values()[i]);
+    __builtin_prefetch(transform, 1);
+    __builtin_prefetch(transform + sizeof(tetTransform) - 1, 1);
+    __builtin_prefetch(&hostTets_.values()[i], 1);
+    __builtin_prefetch(&hostCoordinates_[i], 1);
 #endif
 }
 
@@ -168,46 +199,95 @@ void Foam::polymer::beadSampler::locateHere
 )
 {
     const List<vector>& x = chains.positions();
+    List<tetTransform>& transform = hostTransforms_.update(chains);
 
     // A bead outside this processor's bounding box is in another's mesh,
-    // or in none: no search here. The search starts from the tet that
-    // held the bead at the last locate; the beads are searched in the
-    // order of those tets' cells
+    // or in none: no search here. The beads are taken in the order of the
+    // cells that held them at the last locate
     const boundBox& bounds = neighbours_.localBounds();
     const label nUntracked = orderByCell(hostTet);
-    const bool prefetching = prefetches();
-    label chaini = 0;
-    forAll(cellOrder_, k)
-    {
-        if (prefetching)
-        {
-            prefetchAhead(k, 3, x);
-        }
 
+    // A bead with no tet (the first locate, a new chain, a bead back from
+    // outside) starts from the tet of the bead before it in its chain, a
+    // rod length away, rather than a tree search: the untracked beads
+    // come first in the order, in bead order
+    label chaini = 0;
+    for (label k = 0; k < nUntracked; ++k)
+    {
         const label i = cellOrder_[k];
         const point p = periodic_.wrap(x[i]);
-
-        // A bead with no tet (the first locate, a new chain, a bead back
-        // from outside) starts from the tet of the bead before it in its
-        // chain, a rod length away, rather than a tree search: the
-        // untracked beads come first, in bead order
-        tetIndices start(hostTet[i]);
-        if (k < nUntracked)
+        while (chains.end(chaini) <= i)
         {
-            while (chains.end(chaini) <= i)
-            {
-                ++chaini;
-            }
-            if (i > chains.start(chaini))
-            {
-                start = hostTet[i - 1];
-            }
+            ++chaini;
         }
-
+        const tetIndices start
+        (
+            i > chains.start(chaini) ? hostTet[i - 1] : tetIndices()
+        );
         hostTet[i] =
             bounds.contains(p)
           ? locator_.findTet(p, start, hostCoordinates_[i])
           : tetIndices();
+        if (hostTet[i].cell() >= 0)
+        {
+            transform[i] = locator_.transform(hostTet[i]);
+        }
+    }
+
+    // A bead still in the tet that held it is found from that tet's
+    // transform, its own data, in bead order (the beads' arrays read in
+    // their order); the others are searched after, in their cells' order
+    leavers_.clear();
+    forAll(x, i)
+    {
+        if (hostTet[i].cell() < 0)
+        {
+            continue;
+        }
+        const point p = periodic_.wrap(x[i]);
+        if (!bounds.contains(p))
+        {
+            hostTet[i] = tetIndices();
+        }
+        else if
+        (
+            !cellLocator::stillIn(p, transform[i], hostCoordinates_[i])
+        )
+        {
+            leavers_.append(leaver{p, i, hostTet[i]});
+        }
+    }
+    orderLeavers();
+
+    // The leavers' searches, with the mesh data of the leavers ahead
+    // fetched (their tets' cells, faces and points)
+    const bool prefetching = prefetches();
+    const List<leaver>& leavers = orderedLeavers_;
+    const label nLeavers = leavers.size();
+    forAll(leavers, k)
+    {
+        if (prefetching)
+        {
+            for (int stage = 0; stage < 3; ++stage)
+            {
+                const label ahead = k + 8*(3 - stage);
+                if (ahead < nLeavers)
+                {
+                    locator_.prefetch(leavers[ahead].tet, stage);
+                }
+            }
+            if (k + 32 < nLeavers)
+            {
+                prefetchBead(leavers[k + 32].bead);
+            }
+        }
+        const label i = leavers[k].bead;
+        hostTet[i] =
+            locator_.search(leavers[k].p, leavers[k].tet, hostCoordinates_[i]);
+        if (hostTet[i].cell() >= 0)
+        {
+            transform[i] = locator_.transform(hostTet[i]);
+        }
     }
 }
 
@@ -433,7 +513,7 @@ void Foam::polymer::beadSampler::sample
     {
         if (prefetching)
         {
-            prefetchAhead(k, 2, UList<vector>());
+            prefetchMesh(cellOrder_, k, 2);
         }
         const label i = cellOrder_[k];
         values[i] =
