@@ -12,6 +12,8 @@ Description
 #include "wallScenes.H"
 #include "elasticRods.H"
 
+#include <sstream>
+
 using namespace Foam;
 using namespace Foam::polymer;
 using namespace polymerCloudTest;
@@ -20,9 +22,15 @@ using namespace polymerCloudTest;
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 // Head-on impacts on each wall of the box: time, normal, patch, rebound
 
-TEST(wallModels, headOnImpactAndRebound)
+namespace
 {
-    const fvMesh* mesh = meshOf("wallBox");
+
+// Head-on impacts in the box of 10 cells of size h a side (wallBox, h = 1;
+// micrometreBox, h = 1e-6 m): every length and speed in units of h, so the
+// impact times are the same and the velocities scale with h
+void headOnImpactsIn(const word& caseName, const scalar h)
+{
+    const fvMesh* mesh = meshOf(caseName);
     ASSERT_TRUE(mesh);
     const label walls = patchIndex(*mesh, "walls");
     ASSERT_GE(walls, 0);
@@ -40,40 +48,55 @@ TEST(wallModels, headOnImpactAndRebound)
     for (const word& type : wallModelTypes)
     {
         SCOPED_TRACE(type);
-        autoPtr<wallModel> model = newWall(*mesh, type);
+        const scalar clearance = h*clearanceOf(type);
+        std::ostringstream coeffs;
+        coeffs.precision(17);
+        if (type == "levelSet")
+        {
+            coeffs << "clearance " << clearance << ";";
+        }
+        autoPtr<wallModel> model = newWall(*mesh, type, coeffs.str());
         ASSERT_TRUE(model->active());
 
         for (const vector& n : normals)
         {
             SCOPED_TRACE(str(n));
             // Start 3 from the wall, at the centre of the wall's face
-            const point wallCentre = point(5, 5, 5) - 5*n;
-            const point x = wallCentre + 3*n;
+            const point wallCentre = h*(point(5, 5, 5) - 5*n);
+            const point x = wallCentre + 3*h*n;
             // tangential part: perpendicular to n
             const vector t1 = (mag(n.x()) > 0.5) ? vector(0, 1, 0) : vector(1, 0, 0);
             const vector t2 = n ^ t1;
-            const vector v = -4.5*n + 0.6*t1 - 0.3*t2;
+            const vector v = h*(-4.5*n + 0.6*t1 - 0.3*t2);
 
             wallModel::impact hit;
             ASSERT_TRUE(model->predict(x, v, 1, hit));
             // levelSet: exact on grid-aligned walls away from edges (at its
             // clearance from the wall), to its bisection tolerance
-            const scalar tImpact = (3 - clearanceOf(type))/4.5;
+            const scalar tImpact = (3 - clearance/h)/4.5;
             EXPECT_NEAR(hit.time, tImpact, 1e-8);
-            EXPECT_LE(hit.time, tImpact);   // the bead stays in the fluid
+            // The bead stays in the fluid: OpenFOAM's wall distance is
+            // SMALL on the walls, not zero (wallDist.C), so the level set
+            // may place the impact SMALL (a length: 1e-15 m in metres,
+            // 1e-9 of a micrometre cell) beyond its clearance surface, a
+            // time SMALL/(4.5 h) late
+            EXPECT_LE(hit.time, tImpact + SMALL/(4.5*h));
             EXPECT_NEAR(mag(hit.normal - n), 0, 1e-9);
             EXPECT_EQ(hit.patch, walls);
 
             // Rebound: v - 2 (v.n) n; v-dagger gets the same change
             vector vPath = v;
-            vector vDagger(0.1, -0.2, 0.3);
+            vector vDagger(h*vector(0.1, -0.2, 0.3));
             const vector vDaggerBefore = vDagger;
             model->resetCounters();
             model->interact(7, hit, vPath, vDagger);
             const vector expected = v - 2*(v & hit.normal)*hit.normal;
-            EXPECT_NEAR(mag(vPath - expected), 0, 1e-12);
-            EXPECT_NEAR(mag(vPath - (v + 9*n)), 0, 1e-8);
-            EXPECT_NEAR(mag((vDagger - vDaggerBefore) - (expected - v)), 0, 1e-12);
+            EXPECT_NEAR(mag(vPath - expected), 0, 1e-12*h);
+            EXPECT_NEAR(mag(vPath - (v + 9*h*n)), 0, 1e-8*h);
+            EXPECT_NEAR
+            (
+                mag((vDagger - vDaggerBefore) - (expected - v)), 0, 1e-12*h
+            );
             EXPECT_EQ(model->count().rebounds, 1);
             EXPECT_TRUE(model->escapedBeads().empty());
 
@@ -83,6 +106,22 @@ TEST(wallModels, headOnImpactAndRebound)
             EXPECT_FALSE(model->predict(x, -v, 0.3, hit));
         }
     }
+}
+
+} // End anonymous namespace
+
+
+TEST(wallModels, headOnImpactAndRebound)
+{
+    headOnImpactsIn("wallBox", 1);
+}
+
+
+// The same in metres, with cells of a micrometre: no tolerance of the
+// models may be an absolute length
+TEST(wallModels, headOnImpactAndReboundInMicrometres)
+{
+    headOnImpactsIn("micrometreBox", 1e-6);
 }
 
 
@@ -390,3 +429,4 @@ TEST(wallModels, impactNormalOpposesThePath)
         EXPECT_EQ(nWrong, 0) << type << ": " << nWrong << " of " << nHits;
     }
 }
+

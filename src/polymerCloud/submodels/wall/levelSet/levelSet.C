@@ -62,13 +62,21 @@ Foam::scalar Foam::polymer::wallModels::levelSet::distanceAt
     label& cell
 ) const
 {
-    const point image = periodic_.wrap(p);
-    cell = locator_.findCell(image, cell);
+    // Interpolated in the tet the search finds (OpenFOAM's interpolate at
+    // a position searches the cell's tets again, with cellPointWeight's
+    // absolute degeneracy test: every tet of a mesh of micrometre cells in
+    // metres, whose points would all take the same four weights)
+    barycentric coordinates;
+    const tetIndices tet
+    (
+        locator_.findTet(periodic_.wrap(p), cell, coordinates)
+    );
+    cell = tet.cell();
     if (cell < 0)
     {
         return -1;
     }
-    return interpolateDistance_.interpolate(image, cell) - clearance_;
+    return interpolateDistance_.interpolate(coordinates, tet) - clearance_;
 }
 
 
@@ -131,7 +139,12 @@ bool Foam::polymer::wallModels::levelSet::predict
         }
 
         const point p = periodic_.wrap(x + a*v);
-        vector normal = interpolateGradient_.interpolate(p, cell);
+        barycentric coordinates;
+        const tetIndices tet(locator_.findTet(p, cell, coordinates));
+        vector normal =
+            (tet.cell() >= 0)
+          ? interpolateGradient_.interpolate(coordinates, tet)
+          : vector::zero;
         normal = (mag(normal) > VSMALL) ? normal/mag(normal) : -v/mag(v);
 
         hit.time = a;
