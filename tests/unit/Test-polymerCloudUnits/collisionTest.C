@@ -9,7 +9,8 @@ Description
       reverses;
     - collisionModels::elasticRods on two 2-bead chains whose straight paths
       cross: one event, nothing for the in-step audit, the end on the
-      uncrossed side, momentum of v-dagger conserved;
+      uncrossed side, momentum of v-dagger conserved; the same in metres
+      with rods of a micrometre (no tolerance may be an absolute length);
     - elasticRods meeting rods across periodic images.
     The crossing-time root solvers are tested in crossingRootTest.C, the
     topology audits in topologyTest.C.
@@ -344,10 +345,16 @@ TEST(rodCollision, ConstrainedImpulseKeepsRodsToSecondOrder)
 // to x-dagger cross once. One event; the in-step audit of the piecewise
 // paths finds nothing; the end state is on the side of the start (sign of
 // V); v-dagger keeps its momentum and energy.
-TEST(rodCollision, ElasticRodsResolvesDimerCrossing)
+namespace
+{
+
+// Two dimers whose rods cross in the step, in rod lengths and in metres
+// with rods of a micrometre (every length and speed times L): one event,
+// resolved; the audit finds no crossing left
+void dimerCrossingIn(const scalar L)
 {
     const scalar dt = 0.02;
-    const PtrList<chainType> types(oneType(2, 1, 1, 1, 1));
+    const PtrList<chainType> types(oneType(2, L, 1, 1, 1));
 
     for (const bool rotated : {false, true})
     {
@@ -356,18 +363,18 @@ TEST(rodCollision, ElasticRodsResolvesDimerCrossing)
         scene sc;
         sc.x = FixedList<vector, 4>
         ({
-            vector(-0.35, 0, -0.3), vector(0.65, 0, -0.3),
-            vector(0, -0.7, 0.3), vector(0, 0.3, 0.3)
+            L*vector(-0.35, 0, -0.3), L*vector(0.65, 0, -0.3),
+            L*vector(0, -0.7, 0.3), L*vector(0, 0.3, 0.3)
         });
-        const scalar w = 0.3/(0.6*dt);
+        const scalar w = 0.3*L/(0.6*dt);
         sc.v = FixedList<vector, 4>
         ({
-            vector(0.2, 0.1, w), vector(0.2, 0.1, w),
-            vector(-0.3, 0.05, -w), vector(-0.3, 0.05, -w)
+            vector(0.2*L, 0.1*L, w), vector(0.2*L, 0.1*L, w),
+            vector(-0.3*L, 0.05*L, -w), vector(-0.3*L, 0.05*L, -w)
         });
         if (rotated)
         {
-            sc = sc.moved(genericRotation(), vector(1.3, 2.2, -0.9));
+            sc = sc.moved(genericRotation(), L*vector(1.3, 2.2, -0.9));
         }
 
         polymerChains chains(types);
@@ -404,7 +411,7 @@ TEST(rodCollision, ElasticRodsResolvesDimerCrossing)
 
         model.correct(chains, positionsOld, dt, dt);
 
-        EXPECT_EQ(model.count().events, 1) << "rotated " << rotated;
+        EXPECT_EQ(model.count().events, 1) << "rotated " << rotated << " L " << L;
         EXPECT_EQ(model.count().auditCrossings, 0);
         EXPECT_EQ(model.count().stalls, 0);
         EXPECT_EQ(model.count().steps, 1);
@@ -435,6 +442,20 @@ TEST(rodCollision, ElasticRodsResolvesDimerCrossing)
         EXPECT_LE(mag(momentum), 1e-12*w);
         EXPECT_NEAR(energyAfter, energyBefore, 1e-12*energyBefore);
     }
+}
+
+} // End anonymous namespace
+
+
+TEST(rodCollision, ElasticRodsResolvesDimerCrossing)
+{
+    dimerCrossingIn(1);
+}
+
+
+TEST(rodCollision, ElasticRodsResolvesDimerCrossingInMicrometres)
+{
+    dimerCrossingIn(1e-6);
 }
 
 
