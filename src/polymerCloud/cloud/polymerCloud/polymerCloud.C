@@ -17,6 +17,7 @@ License
 #include "Tuple2.H"
 #include "checkedInput.H"
 #include "cpuTime.H"
+#include "IOdictionary.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -356,6 +357,38 @@ void Foam::polymer::polymerCloud::updateDrift()
 }
 
 
+void Foam::polymer::polymerCloud::checkStaticMesh(const scalar time) const
+{
+    // The cell search, the walls' faces and edges and the beads' kept tets
+    // are built from the mesh as it starts; a solver that moves the mesh
+    // (pimpleFoam with a dynamicMeshDict's motion) would leave them stale
+    if (!mesh_.moving() && !mesh_.topoChanging())
+    {
+        return;
+    }
+    const IOdictionary dynamicMeshDict
+    (
+        IOobject
+        (
+            "dynamicMeshDict",
+            mesh_.time().constant(),
+            mesh_,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    FatalIOErrorInFunction(dynamicMeshDict)
+        << "The mesh " << (mesh_.moving() ? "moved" : "changed its cells")
+        << " at time " << time << ": the polymer cloud needs a static mesh"
+        << " (its cell search, wall faces and the beads' tets are built"
+        << " from the mesh as it starts)" << nl
+        << "    expected: dynamicFvMesh staticFvMesh; (or no"
+        << " constant/dynamicMeshDict)"
+        << exit(FatalIOError);
+}
+
+
 void Foam::polymer::polymerCloud::evolve()
 {
     if (!solution_.active())
@@ -380,6 +413,8 @@ void Foam::polymer::polymerCloud::evolve()
             << " adjustTimeStep, maxDeltaT and maxCo positive)"
             << exit(FatalIOError);
     }
+
+    checkStaticMesh(time);
 
     injectChains(time);
     pathTimes_.lap(pathTimes::inject);
