@@ -22,7 +22,9 @@ Description
       tets' edge matrices have condition numbers of order 10);
     - the same tet and coordinates, to the bit, from the search that
       starts at the tet and tests it by its kept transform (tetTransform)
-      as from the search that tests it on the mesh.
+      as from the search that tests it on the mesh;
+    - in units of the cell, the coordinates of OpenFOAM's
+      tetrahedron::pointToBarycentric, to the bit.
 \*---------------------------------------------------------------------------*/
 
 #include "wallScenes.H"
@@ -86,11 +88,26 @@ void checkSearches(const word& caseName, const scalar h)
             EXPECT_EQ(tet.cell(), expected) << caseName << " point " << str(p);
             ++nChecked;
         }
-        EXPECT_GT(cmptMin(c) + SMALL, 0) << caseName << " coordinates " << str(vector(c[0], c[1], c[2]));
+        const vector shown(c[0], c[1], c[2]);
+        EXPECT_GT(cmptMin(c) + SMALL, 0)
+            << caseName << " coordinates " << str(shown);
         const tetPointRef t(tet.tet(*mesh));
         const point back(c[0]*t.a() + c[1]*t.b() + c[2]*t.c() + c[3]*t.d());
         EXPECT_LT(mag(back - p), 1e-12*h)
-            << caseName << " point " << str(p) << " coordinates " << str(vector(c[0], c[1], c[2]));
+            << caseName << " point " << str(p) << " coordinates "
+            << str(shown);
+
+        // Where the tet's edge determinant is above SMALL (cells of unit
+        // size), OpenFOAM's pointToBarycentric gives the same bits
+        if (h == 1)
+        {
+            barycentric openFoam;
+            ASSERT_GT(mag(t.pointToBarycentric(p, openFoam)), SMALL);
+            for (direction k = 0; k < 4; ++k)
+            {
+                EXPECT_EQ(openFoam[k], c[k]) << caseName << " " << str(p);
+            }
+        }
 
         // From the tet's kept transform: the same tet and coordinates
         polymer::tetTransform transform(locator.transform(from));

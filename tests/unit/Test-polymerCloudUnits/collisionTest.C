@@ -341,16 +341,14 @@ TEST(rodCollision, ConstrainedImpulseKeepsRodsToSecondOrder)
 }
 
 
-// The full model: two 2-bead chains (dimers) whose straight paths from x^n
-// to x-dagger cross once. One event; the in-step audit of the piecewise
-// paths finds nothing; the end state is on the side of the start (sign of
-// V); v-dagger keeps its momentum and energy.
 namespace
 {
 
-// Two dimers whose rods cross in the step, in rod lengths and in metres
-// with rods of a micrometre (every length and speed times L): one event,
-// resolved; the audit finds no crossing left
+// The full model: two 2-bead chains (dimers) whose straight paths from x^n
+// to x-dagger cross once. One event; the in-step audit of the piecewise
+// paths finds nothing; the end state is on the side of the start (sign of
+// V); v-dagger keeps its momentum and energy. In rod lengths and in metres
+// with rods of a micrometre (every length and speed times L)
 void dimerCrossingIn(const scalar L)
 {
     const scalar dt = 0.02;
@@ -411,7 +409,8 @@ void dimerCrossingIn(const scalar L)
 
         model.correct(chains, positionsOld, dt, dt);
 
-        EXPECT_EQ(model.count().events, 1) << "rotated " << rotated << " L " << L;
+        EXPECT_EQ(model.count().events, 1)
+            << "rotated " << rotated << " L " << L;
         EXPECT_EQ(model.count().auditCrossings, 0);
         EXPECT_EQ(model.count().stalls, 0);
         EXPECT_EQ(model.count().steps, 1);

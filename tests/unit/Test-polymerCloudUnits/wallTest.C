@@ -429,4 +429,3 @@ TEST(wallModels, impactNormalOpposesThePath)
         EXPECT_EQ(nWrong, 0) << type << ": " << nWrong << " of " << nHits;
     }
 }
-

@@ -162,14 +162,14 @@ void Foam::polymer::beadSampler::prefetchMesh
     const label nBeads = order.size();
     for (int stage = 0; stage < nStages; ++stage)
     {
-        const label ahead = k + 8*(nStages - stage);
+        const label ahead = k + prefetchSpacing*(nStages - stage);
         if (ahead < nBeads)
         {
             locator_.prefetch(hostTet[order[ahead]], stage);
         }
     }
 #if defined(__GNUC__)
-    const label later = k + 8*(nStages + 1);
+    const label later = k + prefetchSpacing*(nStages + 1);
     if (later < nBeads)
     {
         __builtin_prefetch(&hostTet[order[later]]);
@@ -182,9 +182,12 @@ void Foam::polymer::beadSampler::prefetchMesh
 void Foam::polymer::beadSampler::prefetchBead(const label i) const
 {
 #if defined(__GNUC__)
+    // A transform spans three cache lines at most: its first, middle and
+    // last bytes are in every line it spans
     const char* transform =
         reinterpret_cast<const char*>(&hostTransforms_.values()[i]);
     __builtin_prefetch(transform, 1);
+    __builtin_prefetch(transform + sizeof(tetTransform)/2, 1);
     __builtin_prefetch(transform + sizeof(tetTransform) - 1, 1);
     __builtin_prefetch(&hostTets_.values()[i], 1);
     __builtin_prefetch(&hostCoordinates_[i], 1);
@@ -192,25 +195,20 @@ void Foam::polymer::beadSampler::prefetchBead(const label i) const
 }
 
 
-void Foam::polymer::beadSampler::locateHere
+void Foam::polymer::beadSampler::locateUntracked
 (
     const polymerChains& chains,
-    List<tetIndices>& hostTet
+    const label nUntracked,
+    List<tetIndices>& hostTet,
+    List<tetTransform>& transform
 )
 {
-    const List<vector>& x = chains.positions();
-    List<tetTransform>& transform = hostTransforms_.update(chains);
-
-    // A bead outside this processor's bounding box is in another's mesh,
-    // or in none: no search here. The beads are taken in the order of the
-    // cells that held them at the last locate
-    const boundBox& bounds = neighbours_.localBounds();
-    const label nUntracked = orderByCell(hostTet);
-
     // A bead with no tet (the first locate, a new chain, a bead back from
     // outside) starts from the tet of the bead before it in its chain, a
     // rod length away, rather than a tree search: the untracked beads
-    // come first in the order, in bead order
+    // come first in the cells' order, in bead order
+    const List<vector>& x = chains.positions();
+    const boundBox& bounds = neighbours_.localBounds();
     label chaini = 0;
     for (label k = 0; k < nUntracked; ++k)
     {
@@ -233,10 +231,19 @@ void Foam::polymer::beadSampler::locateHere
             transform[i] = locator_.transform(hostTet[i]);
         }
     }
+}
 
-    // A bead still in the tet that held it is found from that tet's
-    // transform, its own data, in bead order (the beads' arrays read in
-    // their order); the others are searched after, in their cells' order
+
+void Foam::polymer::beadSampler::findLeavers
+(
+    const UList<vector>& x,
+    List<tetIndices>& hostTet,
+    const UList<tetTransform>& transform
+)
+{
+    // In bead order: the beads' own arrays are read in sequence, and a
+    // bead still in its tet reads no mesh data
+    const boundBox& bounds = neighbours_.localBounds();
     leavers_.clear();
     forAll(x, i)
     {
@@ -258,27 +265,38 @@ void Foam::polymer::beadSampler::locateHere
         }
     }
     orderLeavers();
+}
 
-    // The leavers' searches, with the mesh data of the leavers ahead
-    // fetched (their tets' cells, faces and points)
+
+void Foam::polymer::beadSampler::searchLeavers
+(
+    List<tetIndices>& hostTet,
+    List<tetTransform>& transform
+)
+{
+    // In the order of their last cells, with the mesh data of the leavers
+    // ahead fetched (their tets' cells, faces and points, a stage each as
+    // prefetchMesh) and their own entries
     const bool prefetching = prefetches();
     const List<leaver>& leavers = orderedLeavers_;
     const label nLeavers = leavers.size();
+    const int nStages = 3;
     forAll(leavers, k)
     {
         if (prefetching)
         {
-            for (int stage = 0; stage < 3; ++stage)
+            for (int stage = 0; stage < nStages; ++stage)
             {
-                const label ahead = k + 8*(3 - stage);
+                const label ahead = k + prefetchSpacing*(nStages - stage);
                 if (ahead < nLeavers)
                 {
                     locator_.prefetch(leavers[ahead].tet, stage);
                 }
             }
-            if (k + 32 < nLeavers)
+            const label later = k + prefetchSpacing*(nStages + 1);
+            if (later < nLeavers)
             {
-                prefetchBead(leavers[k + 32].bead);
+                prefetchBead(leavers[later].bead);
             }
         }
         const label i = leavers[k].bead;
@@ -289,6 +307,24 @@ void Foam::polymer::beadSampler::locateHere
             transform[i] = locator_.transform(hostTet[i]);
         }
     }
+}
+
+
+void Foam::polymer::beadSampler::locateHere
+(
+    const polymerChains& chains,
+    List<tetIndices>& hostTet,
+    List<tetTransform>& transform
+)
+{
+    // A bead outside this processor's bounding box is in another's mesh,
+    // or in none: no search here. The untracked beads first (they start
+    // from their neighbours' tets as the last locate left them), then
+    // those that left their tet
+    const label nUntracked = orderByCell(hostTet);
+    locateUntracked(chains, nUntracked, hostTet, transform);
+    findLeavers(chains.positions(), hostTet, transform);
+    searchLeavers(hostTet, transform);
 }
 
 
@@ -457,6 +493,7 @@ void Foam::polymer::beadSampler::locate(const polymerChains& chains)
 {
     const List<vector>& x = chains.positions();
     List<tetIndices>& hostTet = hostTets_.update(chains);
+    List<tetTransform>& hostTransform = hostTransforms_.update(chains);
     labelList& owner = remoteOwners_.update(chains);
     List<tetIndices>& remoteTet = remoteTets_.update(chains);
 
@@ -470,7 +507,7 @@ void Foam::polymer::beadSampler::locate(const polymerChains& chains)
         locatedBeads_[proci].clear();
     }
 
-    locateHere(chains, hostTet);
+    locateHere(chains, hostTet, hostTransform);
 
     forAll(hostTet, i)
     {

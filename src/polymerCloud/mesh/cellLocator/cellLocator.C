@@ -81,12 +81,12 @@ bool Foam::polymer::cellLocator::inTet
     // in absolute terms, which is every tet of a mesh in metres with
     // cells of a micrometre. Its arithmetic otherwise (tetTransform)
     const tetPointRef points(tet.tet(mesh));
-    const scalar det = Foam::det(tetTransform::edgeMatrix(points));
-    if (!(mag(det/mesh.cellVolumes()[tet.cell()]) > SMALL))
+    const scalar detT = det(tetTransform::edgeMatrix(points));
+    if (!(mag(detT/mesh.cellVolumes()[tet.cell()]) > SMALL))
     {
         return false;
     }
-    coordinates = tetTransform(points, det).coordinates(p);
+    coordinates = tetTransform(points, detT).coordinates(p);
     return holds(coordinates);
 }
 
