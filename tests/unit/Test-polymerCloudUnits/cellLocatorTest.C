@@ -25,10 +25,21 @@ Description
       as from the search that tests it on the mesh;
     - in units of the cell, the coordinates of OpenFOAM's
       tetrahedron::pointToBarycentric, to the bit.
+    And the bead sampler (beadSampler), which keeps each bead's tet and
+    its transform from locate to locate: 50 chains of 10 beads in the box
+    in micrometres, located, then over 20 rounds moved by up to 0.3 cells
+    a bead, reordered, one removed and one appended, and located again;
+    every bead's tet is in the cell that holds it, and the cell centres'
+    field sampled there (cellPoint, exact for a linear field on this mesh
+    to round-off but in the boundary cells, whose points at the box's
+    edges take other values) gives the bead's position back to 1e-12
+    cells.
 \*---------------------------------------------------------------------------*/
 
 #include "wallScenes.H"
 #include "cellLocator.H"
+#include "beadSampler.H"
+#include "interpolation.H"
 
 #include <random>
 
@@ -140,6 +151,93 @@ TEST(cellLocator, FindsTheTetAndCoordinatesInCellUnits)
 TEST(cellLocator, FindsTheTetAndCoordinatesInMicrometreCells)
 {
     checkSearches("micrometreBox", 1e-6);
+}
+
+
+TEST(beadSampler, KeepsEachBeadsTetThroughMovesAndReorders)
+{
+    const scalar h = 1e-6;
+    const fvMesh* mesh = meshOf("micrometreBox");
+    ASSERT_TRUE(mesh);
+    const PtrList<chainType> types(oneType(10, 0.5*h, 1, 1, 1));
+    std::mt19937_64 engine(7);
+    std::uniform_real_distribution<scalar> u(0, 1);
+    auto inside = [&]()
+    {
+        return point(h*(1 + 8*u(engine)), h*(1 + 8*u(engine)),
+            h*(1 + 8*u(engine)));
+    };
+    auto newChain = [&](polymerChains& chains, const label id)
+    {
+        List<vector> x(10), v(10, Zero);
+        for (vector& xi : x)
+        {
+            xi = inside();
+        }
+        chains.append(0, id, x, v);
+    };
+
+    polymerChains chains(types);
+    label nextId = 0;
+    for (label c = 0; c < 50; ++c)
+    {
+        newChain(chains, nextId++);
+    }
+
+    polymer::beadSampler sampler(*mesh);
+    const autoPtr<interpolation<vector>> centres
+    (
+        interpolation<vector>::New("cellPoint", mesh->C())
+    );
+    label nChecked = 0;
+    label nSampled = 0;
+    for (label round = 0; round < 20; ++round)
+    {
+        sampler.locate(chains);
+        List<vector> sampled(chains.positions().size());
+        sampler.sample(centres(), sampled);
+        const List<tetIndices>& tets = sampler.hostTets();
+        forAll(chains.positions(), i)
+        {
+            const point& p = chains.positions()[i];
+            ASSERT_GE(tets[i].cell(), 0) << "round " << round << str(p);
+            const label expected = boxCell(p, h, 1e-9);
+            if (expected >= 0)
+            {
+                EXPECT_EQ(tets[i].cell(), expected)
+                    << "round " << round << " bead " << i << str(p);
+                ++nChecked;
+            }
+            // Away from the boundary cells, whose points' values are
+            // not the linear field's at the box's edges
+            if (cmptMin(p) > h && cmptMax(p) < 9*h)
+            {
+                EXPECT_LT(mag(sampled[i] - p), 1e-12*h)
+                    << "round " << round << " bead " << i << str(p);
+                ++nSampled;
+            }
+        }
+
+        // Moves within the box, a new order, one chain fewer, one more
+        for (vector& x : chains.positions())
+        {
+            const vector step
+            (
+                0.3*h*vector(2*u(engine) - 1, 2*u(engine) - 1,
+                2*u(engine) - 1)
+            );
+            const point moved(x + step);
+            x = (cmptMin(moved) > 0.5*h && cmptMax(moved) < 9.5*h)
+              ? moved : x;
+        }
+        labelList newToOld(identity(chains.nChains()));
+        std::shuffle(newToOld.begin(), newToOld.end(), engine);
+        chains.reorder(newToOld);
+        chains.remove(labelList({label(u(engine)*chains.nChains())}));
+        newChain(chains, nextId++);
+    }
+    EXPECT_GT(nChecked, 9000);
+    EXPECT_GT(nSampled, 4000);
 }
 
 
