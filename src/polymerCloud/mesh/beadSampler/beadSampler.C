@@ -72,8 +72,10 @@ Foam::polymer::beadSampler::beadSampler(const fvMesh& mesh)
     hostTets_(tetIndices()),
     hostCoordinates_(),
     hostTransforms_(tetTransform()),
-    leavers_(),
-    orderedLeavers_(),
+    leaverTets_(),
+    leaverBeads_(),
+    leaverPoints_(),
+    leaverOrder_(),
     cellOrder_(),
     cellCounts_(),
     answeredTets_(Pstream::nProcs()),
@@ -89,13 +91,14 @@ Foam::polymer::beadSampler::beadSampler(const fvMesh& mesh)
 
 Foam::label Foam::polymer::beadSampler::orderByCell
 (
-    const UList<tetIndices>& hostTet
+    const UList<tetIndices>& tets,
+    labelList& order
 )
 {
-    // Slot 0 for the beads in no cell here, slot c + 1 for cell c
+    // Slot 0 for the tets in no cell here, slot c + 1 for cell c
     cellCounts_.setSize(mesh_.nCells() + 2);
     cellCounts_ = 0;
-    for (const tetIndices& tet : hostTet)
+    for (const tetIndices& tet : tets)
     {
         ++cellCounts_[tet.cell() + 2];
     }
@@ -104,35 +107,14 @@ Foam::label Foam::polymer::beadSampler::orderByCell
         cellCounts_[slot] += cellCounts_[slot - 1];
     }
 
-    cellOrder_.setSize(hostTet.size());
-    forAll(hostTet, i)
+    order.setSize(tets.size());
+    forAll(tets, i)
     {
-        cellOrder_[cellCounts_[hostTet[i].cell() + 1]++] = i;
+        order[cellCounts_[tets[i].cell() + 1]++] = i;
     }
 
-    // Slot 0 now counts to the end of the untracked beads
+    // Slot 0 now counts to the end of the tets in no cell
     return cellCounts_[0];
-}
-
-
-void Foam::polymer::beadSampler::orderLeavers()
-{
-    // A counting sort, stable, as orderByCell's
-    cellCounts_.setSize(mesh_.nCells() + 1);
-    cellCounts_ = 0;
-    for (const leaver& l : leavers_)
-    {
-        ++cellCounts_[l.tet.cell() + 1];
-    }
-    for (label slot = 1; slot < cellCounts_.size(); ++slot)
-    {
-        cellCounts_[slot] += cellCounts_[slot - 1];
-    }
-    orderedLeavers_.setSize(leavers_.size());
-    for (const leaver& l : leavers_)
-    {
-        orderedLeavers_[cellCounts_[l.tet.cell()]++] = l;
-    }
 }
 
 
@@ -149,48 +131,44 @@ bool Foam::polymer::beadSampler::prefetches() const
 
 void Foam::polymer::beadSampler::prefetchMesh
 (
+    const UList<tetIndices>& tets,
     const labelUList& order,
     const label k,
     const int nStages
 ) const
 {
-    // The mesh data of the tets of the beads 8, 16, ... places ahead in
-    // the order, a stage each (a stage needs the one before in the
-    // cache), and those beads' own tet and coordinates: in the cells'
-    // order the beads' arrays are read at random
-    const List<tetIndices>& hostTet = hostTets_.values();
-    const label nBeads = order.size();
+    // The mesh data of the tets 8, 16, ... places ahead in the order, a
+    // stage each (a stage needs the one before in the cache)
     for (int stage = 0; stage < nStages; ++stage)
     {
         const label ahead = k + prefetchSpacing*(nStages - stage);
-        if (ahead < nBeads)
+        if (ahead < order.size())
         {
-            locator_.prefetch(hostTet[order[ahead]], stage);
+            locator_.prefetch(tets[order[ahead]], stage);
         }
     }
-#if defined(__GNUC__)
-    const label later = k + prefetchSpacing*(nStages + 1);
-    if (later < nBeads)
-    {
-        __builtin_prefetch(&hostTet[order[later]]);
-        __builtin_prefetch(&hostCoordinates_[order[later]]);
-    }
-#endif
 }
 
 
-void Foam::polymer::beadSampler::prefetchBead(const label i) const
+void Foam::polymer::beadSampler::prefetchBead
+(
+    const label i,
+    const bool withTransform
+) const
 {
 #if defined(__GNUC__)
-    // A transform spans three cache lines at most: its first, middle and
-    // last bytes are in every line it spans
-    const char* transform =
-        reinterpret_cast<const char*>(&hostTransforms_.values()[i]);
-    __builtin_prefetch(transform, 1);
-    __builtin_prefetch(transform + sizeof(tetTransform)/2, 1);
-    __builtin_prefetch(transform + sizeof(tetTransform) - 1, 1);
     __builtin_prefetch(&hostTets_.values()[i], 1);
     __builtin_prefetch(&hostCoordinates_[i], 1);
+    if (withTransform)
+    {
+        // A transform spans three cache lines at most: its first, middle
+        // and last bytes are in every line it spans
+        const char* transform =
+            reinterpret_cast<const char*>(&hostTransforms_.values()[i]);
+        __builtin_prefetch(transform, 1);
+        __builtin_prefetch(transform + sizeof(tetTransform)/2, 1);
+        __builtin_prefetch(transform + sizeof(tetTransform) - 1, 1);
+    }
 #endif
 }
 
@@ -244,7 +222,9 @@ void Foam::polymer::beadSampler::findLeavers
     // In bead order: the beads' own arrays are read in sequence, and a
     // bead still in its tet reads no mesh data
     const boundBox& bounds = neighbours_.localBounds();
-    leavers_.clear();
+    leaverTets_.clear();
+    leaverBeads_.clear();
+    leaverPoints_.clear();
     forAll(x, i)
     {
         if (hostTet[i].cell() < 0)
@@ -261,10 +241,12 @@ void Foam::polymer::beadSampler::findLeavers
             !cellLocator::stillIn(p, transform[i], hostCoordinates_[i])
         )
         {
-            leavers_.append(leaver{p, i, hostTet[i]});
+            leaverTets_.append(hostTet[i]);
+            leaverBeads_.append(i);
+            leaverPoints_.append(p);
         }
     }
-    orderLeavers();
+    orderByCell(leaverTets_, leaverOrder_);
 }
 
 
@@ -275,33 +257,31 @@ void Foam::polymer::beadSampler::searchLeavers
 )
 {
     // In the order of their last cells, with the mesh data of the leavers
-    // ahead fetched (their tets' cells, faces and points, a stage each as
-    // prefetchMesh) and their own entries
+    // ahead fetched (their tets' cells, faces and points) and their own
+    // entries
     const bool prefetching = prefetches();
-    const List<leaver>& leavers = orderedLeavers_;
-    const label nLeavers = leavers.size();
+    const label nLeavers = leaverOrder_.size();
     const int nStages = 3;
-    forAll(leavers, k)
+    forAll(leaverOrder_, k)
     {
         if (prefetching)
         {
-            for (int stage = 0; stage < nStages; ++stage)
-            {
-                const label ahead = k + prefetchSpacing*(nStages - stage);
-                if (ahead < nLeavers)
-                {
-                    locator_.prefetch(leavers[ahead].tet, stage);
-                }
-            }
+            prefetchMesh(leaverTets_, leaverOrder_, k, nStages);
             const label later = k + prefetchSpacing*(nStages + 1);
             if (later < nLeavers)
             {
-                prefetchBead(leavers[later].bead);
+                prefetchBead(leaverBeads_[leaverOrder_[later]], true);
             }
         }
-        const label i = leavers[k].bead;
+        const label j = leaverOrder_[k];
+        const label i = leaverBeads_[j];
         hostTet[i] =
-            locator_.search(leavers[k].p, leavers[k].tet, hostCoordinates_[i]);
+            locator_.search
+            (
+                leaverPoints_[j],
+                leaverTets_[j],
+                hostCoordinates_[i]
+            );
         if (hostTet[i].cell() >= 0)
         {
             transform[i] = locator_.transform(hostTet[i]);
@@ -321,7 +301,7 @@ void Foam::polymer::beadSampler::locateHere
     // or in none: no search here. The untracked beads first (they start
     // from their neighbours' tets as the last locate left them), then
     // those that left their tet
-    const label nUntracked = orderByCell(hostTet);
+    const label nUntracked = orderByCell(hostTet, cellOrder_);
     locateUntracked(chains, nUntracked, hostTet, transform);
     findLeavers(chains.positions(), hostTet, transform);
     searchLeavers(hostTet, transform);
@@ -550,7 +530,13 @@ void Foam::polymer::beadSampler::sample
     {
         if (prefetching)
         {
-            prefetchMesh(cellOrder_, k, 2);
+            const int nStages = 2;
+            prefetchMesh(hostTet, cellOrder_, k, nStages);
+            const label later = k + prefetchSpacing*(nStages + 1);
+            if (later < cellOrder_.size())
+            {
+                prefetchBead(cellOrder_[later], false);
+            }
         }
         const label i = cellOrder_[k];
         values[i] =

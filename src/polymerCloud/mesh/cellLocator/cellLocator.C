@@ -81,12 +81,13 @@ bool Foam::polymer::cellLocator::inTet
     // in absolute terms, which is every tet of a mesh in metres with
     // cells of a micrometre. Its arithmetic otherwise (tetTransform)
     const tetPointRef points(tet.tet(mesh));
-    const scalar detT = det(tetTransform::edgeMatrix(points));
+    const tensor edges(tetTransform::edgeMatrix(points));
+    const scalar detT = det(edges);
     if (!(mag(detT/mesh.cellVolumes()[tet.cell()]) > SMALL))
     {
         return false;
     }
-    coordinates = tetTransform(points, detT).coordinates(p);
+    coordinates = tetTransform(points, edges, detT).coordinates(p);
     return holds(coordinates);
 }
 
@@ -414,7 +415,8 @@ Foam::polymer::tetTransform Foam::polymer::cellLocator::transform
 ) const
 {
     const tetPointRef points(tet.tet(mesh()));
-    return tetTransform(points, det(tetTransform::edgeMatrix(points)));
+    const tensor edges(tetTransform::edgeMatrix(points));
+    return tetTransform(points, edges, det(edges));
 }
 
 

@@ -59,20 +59,16 @@ Foam::polymer::wallModels::levelSet::levelSet
 Foam::scalar Foam::polymer::wallModels::levelSet::distanceAt
 (
     const point& p,
-    label& cell
+    tetIndices& tet,
+    barycentric& coordinates
 ) const
 {
     // Interpolated in the tet the search finds (OpenFOAM's interpolate at
     // a position searches the cell's tets again, with cellPointWeight's
     // absolute degeneracy test: every tet of a mesh of micrometre cells in
     // metres, whose points would all take the same four weights)
-    barycentric coordinates;
-    const tetIndices tet
-    (
-        locator_.findTet(periodic_.wrap(p), cell, coordinates)
-    );
-    cell = tet.cell();
-    if (cell < 0)
+    tet = locator_.findTet(periodic_.wrap(p), tet, coordinates);
+    if (tet.cell() < 0)
     {
         return -1;
     }
@@ -95,10 +91,13 @@ bool Foam::polymer::wallModels::levelSet::predict
         return false;
     }
 
-    label cell = -1;
+    // The tet and coordinates of the last point in front of the level
+    // set's zero: the next search starts there, and the impact's normal
+    // is interpolated there
+    tetIndices tet;
+    barycentric coordinates;
     scalar before = 0;
-    scalar distanceBefore = distanceAt(x, cell);
-    if (distanceBefore < 0)
+    if (distanceAt(x, tet, coordinates) < 0)
     {
         return faceImpact(x, v, T, hit);
     }
@@ -106,17 +105,18 @@ bool Foam::polymer::wallModels::levelSet::predict
     for (label k = 1; k <= nSamples_; ++k)
     {
         const scalar s = T*k/nSamples_;
-        label sampleCell = cell;
-        const scalar d = distanceAt(x + s*v, sampleCell);
+        tetIndices sampleTet(tet);
+        barycentric sampleCoordinates;
+        const scalar d = distanceAt(x + s*v, sampleTet, sampleCoordinates);
 
         // A sample outside the mesh is behind the boundary too: the
         // bisection below finds where the path leaves the clearance
         // surface or the mesh, whichever comes first
-        if (sampleCell >= 0 && d > 0)
+        if (sampleTet.cell() >= 0 && d > 0)
         {
             before = s;
-            distanceBefore = d;
-            cell = sampleCell;
+            tet = sampleTet;
+            coordinates = sampleCoordinates;
             continue;
         }
 
@@ -125,12 +125,15 @@ bool Foam::polymer::wallModels::levelSet::predict
         for (int iter = 0; iter < 60 && b - a > 1e-12*T; ++iter)
         {
             const scalar middle = 0.5*(a + b);
-            label middleCell = cell;
-            const scalar dm = distanceAt(x + middle*v, middleCell);
-            if (dm > 0 && middleCell >= 0)
+            tetIndices middleTet(tet);
+            barycentric middleCoordinates;
+            const scalar dm =
+                distanceAt(x + middle*v, middleTet, middleCoordinates);
+            if (dm > 0 && middleTet.cell() >= 0)
             {
                 a = middle;
-                cell = middleCell;
+                tet = middleTet;
+                coordinates = middleCoordinates;
             }
             else
             {
@@ -139,12 +142,7 @@ bool Foam::polymer::wallModels::levelSet::predict
         }
 
         const point p = periodic_.wrap(x + a*v);
-        barycentric coordinates;
-        const tetIndices tet(locator_.findTet(p, cell, coordinates));
-        vector normal =
-            (tet.cell() >= 0)
-          ? interpolateGradient_.interpolate(coordinates, tet)
-          : vector::zero;
+        vector normal = interpolateGradient_.interpolate(coordinates, tet);
         normal = (mag(normal) > VSMALL) ? normal/mag(normal) : -v/mag(v);
 
         hit.time = a;
