@@ -18,6 +18,7 @@ License
 #include "checkedInput.H"
 #include "cpuTime.H"
 #include "IOdictionary.H"
+#include "freedMemory.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -194,6 +195,10 @@ Foam::polymer::polymerCloud::polymerCloud
     {
         properties_.dictionary::name() = properties.name();
     }
+
+    // A step's temporary arrays, the flow's and the cloud's, reuse the
+    // previous step's memory
+    freedMemory::keep();
 
     // Locating points builds the mesh's tet base points on first use, a
     // collective operation: build them on every processor now, since only

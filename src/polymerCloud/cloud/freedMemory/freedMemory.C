@@ -1,0 +1,91 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "freedMemory.H"
+#include "debug.H"
+#include "registerSwitch.H"
+#include "messageStream.H"
+
+#include <cstdlib>
+#include <cstring>
+#include <malloc.h>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+bool Foam::polymer::freedMemory::settled_ = false;
+
+int Foam::polymer::freedMemory::keepSwitch
+(
+    Foam::debug::optimisationSwitch("keepFreedMemory", 1)
+);
+
+registerOptSwitch
+(
+    "keepFreedMemory",
+    int,
+    Foam::polymer::freedMemory::keepSwitch
+);
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+bool Foam::polymer::freedMemory::setByEnvironment()
+{
+    const char* tunables = std::getenv("GLIBC_TUNABLES");
+
+    return
+        std::getenv("MALLOC_MMAP_THRESHOLD_")
+     || std::getenv("MALLOC_TRIM_THRESHOLD_")
+     || std::getenv("MALLOC_TOP_PAD_")
+     || (tunables && std::strstr(tunables, "glibc.malloc."));
+}
+
+
+bool Foam::polymer::freedMemory::keep()
+{
+    if (settled_)
+    {
+        return false;
+    }
+    settled_ = true;
+
+    if (!keepSwitch)
+    {
+        Info<< "polymerCloud: malloc's own thresholds"
+            << " (OptimisationSwitches keepFreedMemory 0)" << nl;
+        return false;
+    }
+    if (setByEnvironment())
+    {
+        Info<< "polymerCloud: malloc's thresholds as the environment sets"
+            << " them" << nl;
+        return false;
+    }
+
+    // Each call fixes its threshold (no dynamic raise); a refusal leaves
+    // glibc's policy, which is only slower
+    const bool set =
+        mallopt(M_MMAP_THRESHOLD, mmapThreshold) == 1
+     && mallopt(M_TRIM_THRESHOLD, trimThreshold) == 1;
+
+    Info<< "polymerCloud: freed memory "
+        << (set ? "kept for reuse" : "returned as malloc decides")
+        << " (arrays up to " << mmapThreshold/(1024*1024)
+        << " MB from the heap, the heap's free top kept up to "
+        << trimThreshold/(1024*1024) << " MB;"
+        << " OptimisationSwitches keepFreedMemory)" << nl;
+
+    return set;
+}
+
+
+// ************************************************************************* //
