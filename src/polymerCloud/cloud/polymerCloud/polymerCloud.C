@@ -196,10 +196,6 @@ Foam::polymer::polymerCloud::polymerCloud
         properties_.dictionary::name() = properties.name();
     }
 
-    // A step's temporary arrays, the flow's and the cloud's, reuse the
-    // previous step's memory
-    freedMemory::keep();
-
     // Locating points builds the mesh's tet base points on first use, a
     // collective operation: build them on every processor now, since only
     // some processors hold chains
@@ -216,6 +212,14 @@ Foam::polymer::polymerCloud::polymerCloud
     );
 
     selectModels(subModels);
+
+    // In a solved flow, a step's temporary fields (and the cloud's arrays
+    // of located beads) reuse the previous step's memory; free chains make
+    // no arrays that size each step
+    if (solvesFlow())
+    {
+        freedMemory::keep(mesh_.time());
+    }
 
     const bool restart = startChains(subModels);
 
