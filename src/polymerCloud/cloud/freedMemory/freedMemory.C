@@ -13,7 +13,7 @@ License
 #include "freedMemory.H"
 #include "debug.H"
 #include "Time.H"
-#include "messageStream.H"
+#include "error.H"
 
 #include <cstdlib>
 #include <cstring>
@@ -23,6 +23,7 @@ License
 
 bool Foam::polymer::freedMemory::settled_ = false;
 
+
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
 int Foam::polymer::freedMemory::keepSwitch(const Time& runTime)
@@ -31,11 +32,22 @@ int Foam::polymer::freedMemory::keepSwitch(const Time& runTime)
     // raised the peak memory at exit by 4 MB in a run of 400 000 beads
     const dictionary* local =
         runTime.controlDict().findDict("OptimisationSwitches");
-
-    return
+    const dictionary& switches =
         (local && local->found("keepFreedMemory"))
-      ? local->get<int>("keepFreedMemory")
-      : debug::optimisationSwitches().getOrDefault<int>("keepFreedMemory", 1);
+      ? *local
+      : debug::optimisationSwitches();
+
+    const int value = switches.getOrDefault<int>("keepFreedMemory", 1);
+    if (value != 0 && value != 1)
+    {
+        FatalIOErrorInFunction(switches)
+            << "OptimisationSwitches keepFreedMemory in " << switches.name()
+            << " is " << value << nl
+            << "    expected: keepFreedMemory 0; (malloc's own policy) or"
+            << " keepFreedMemory 1; (freed memory kept for reuse)"
+            << exit(FatalIOError);
+    }
+    return value;
 }
 
 
