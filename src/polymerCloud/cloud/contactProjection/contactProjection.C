@@ -14,7 +14,7 @@ License
 #include "packedReduction.H"
 #include "rodCrossingAudit.H"
 #include "rodPairCrossing.H"
-#include "cpuTime.H"
+#include "cpuTimeCxx.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -499,7 +499,7 @@ void Foam::polymer::contactProjection::project
     const label maxPasses = 3*chains_.nChains() + 2;
     for (label pass = 0; pass < maxPasses; ++pass)
     {
-        cpuTime zoneTimer;
+        cpuTimeCxx zoneTimer;
         placeZones(wall, positionsStart, positionsAfter, velocitiesAfter);
         counts_.zoneSeconds += zoneTimer.cpuTimeIncrement();
         const bool changed =
@@ -528,7 +528,7 @@ void Foam::polymer::contactProjection::correct
     const wallModel* wall
 )
 {
-    cpuTime timer;
+    cpuTimeCxx timer;
     project(positionsStart, deltaT, time, wall);
     counts_.seconds += timer.cpuTimeIncrement();
 }

@@ -16,7 +16,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "contactProjection.H"
-#include "cpuTime.H"
+#include "cpuTimeCxx.H"
 
 #include <algorithm>
 
@@ -384,7 +384,7 @@ void Foam::polymer::contactProjection::resolveContacts
     {
         const bool lastRound = (round == maxContactRounds_);
         const label newContacts = contacts_.size();
-        cpuTime timer;
+        cpuTimeCxx timer;
         if (uncrossable_)
         {
             const boolList rodsToCheck(rodsToAudit(positionsAudited));

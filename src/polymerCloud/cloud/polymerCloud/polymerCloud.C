@@ -16,7 +16,7 @@ License
 #include "OStringStream.H"
 #include "Tuple2.H"
 #include "checkedInput.H"
-#include "cpuTime.H"
+#include "cpuTimeCxx.H"
 #include "IOdictionary.H"
 #include "freedMemory.H"
 
@@ -405,7 +405,7 @@ void Foam::polymer::polymerCloud::evolve()
         return;
     }
 
-    cpuTime timer;
+    cpuTimeCxx timer;
     pathTimes_.start();
 
     const Time& runTime = mesh_.time();
