@@ -87,7 +87,11 @@ Foam::polymer::boxGrid::boxGrid(const UList<boundBox>& boxes)
         region_ = boundBox(Zero, Zero);
     }
 
-    // The widest box's span, coarsened to at most eight cells a box
+    // Half the widest box's span, coarsened to at most eight cells a box:
+    // a box then spans more cells, but each cell is smaller and holds
+    // fewer boxes far from the box asked about, which a query would visit
+    // only to pass over
+    cellSize_ *= 0.5;
     const vector span(region_.span());
     const scalar maxCells = max(64, 8*boxes.size());
     cellSize_ = max(cellSize_, cmptMax(span)/std::cbrt(maxCells));
