@@ -38,7 +38,8 @@ Foam::polymer::pathTimes::names
 Foam::polymer::pathTimes::pathTimes()
 :
     seconds_(Zero),
-    last_(std::clock())
+    last_(std::clock()),
+    started_(last_)
 {}
 
 

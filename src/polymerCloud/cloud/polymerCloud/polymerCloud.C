@@ -16,7 +16,6 @@ License
 #include "OStringStream.H"
 #include "Tuple2.H"
 #include "checkedInput.H"
-#include "cpuTimeCxx.H"
 #include "IOdictionary.H"
 #include "freedMemory.H"
 
@@ -405,7 +404,6 @@ void Foam::polymer::polymerCloud::evolve()
         return;
     }
 
-    cpuTimeCxx timer;
     pathTimes_.start();
 
     const Time& runTime = mesh_.time();
@@ -449,7 +447,9 @@ void Foam::polymer::polymerCloud::evolve()
     }
     stepper_->setSubCycle(1, 0);
 
-    evolveSeconds_ += timer.cpuTimeIncrement();
+    // The step's paths up to its bookkeeping, the cloud functions' laps
+    // within the step included
+    evolveSeconds_ += pathTimes_.sinceStart();
 
     for (polymerCloudFunction& function : functions_)
     {
