@@ -190,6 +190,22 @@ TEST(rodCrossingAudit, PassThroughIsOneCrossing)
         EXPECT_EQ(found[0].piece, 0);
         // And back: another crossing
         EXPECT_EQ(auditCount(List<List<point>>({a, b, a})), 2);
+
+        // The moving rod listed first, then second, with the other rod
+        // staying put: found either way (pairs are looked up from the
+        // rods that move)
+        const List<labelPair> movingFirst({labelPair(2, 3), labelPair(0, 1)});
+        EXPECT_EQ(rodCrossingAudit(movingFirst).check(a, b).size(), 1);
+        for (const label checked : {0, 1})
+        {
+            boolList rodsToCheck(2, false);
+            rodsToCheck[checked] = true;
+            EXPECT_EQ
+            (
+                rodCrossingAudit(auditRods).check(a, b, rodsToCheck).size(),
+                1
+            ) << "rod to check " << checked;
+        }
     }
 }
 

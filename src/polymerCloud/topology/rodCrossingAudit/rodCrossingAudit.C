@@ -396,12 +396,19 @@ Foam::polymer::rodCrossingAudit::check
         }
     };
 
-    // Candidates from a grid of the boxes: each pair once, from its first
-    // rod or from its rod to check
+    // Candidates from a grid of the boxes, looked up from the rods every
+    // pair to check has one of: a rod to check, or without those a rod
+    // that moves (two rods that stay put cannot cross; where few chains
+    // were re-projected most rods stay put). A pair of two such rods is
+    // taken from its first
+    const auto isOrigin = [&](const label rodi)
+    {
+        return rodsToCheck.empty() ? moves[rodi] : rodsToCheck[rodi];
+    };
     const boxGrid grid(boxes);
     forAll(rods_, a)
     {
-        if (!rodsToCheck.empty() && !rodsToCheck[a])
+        if (!isOrigin(a))
         {
             continue;
         }
@@ -414,7 +421,7 @@ Foam::polymer::rodCrossingAudit::check
                 {
                     checkIfNear(a, b);
                 }
-                else if (!rodsToCheck.empty() && !rodsToCheck[b])
+                else if (!isOrigin(b))
                 {
                     checkIfNear(b, a);
                 }
