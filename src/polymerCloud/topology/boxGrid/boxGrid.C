@@ -90,11 +90,21 @@ Foam::polymer::boxGrid::boxGrid(const UList<boundBox>& boxes)
     // Half the widest box's span, coarsened to at most eight cells a box:
     // a box then spans more cells, but each cell is smaller and holds
     // fewer boxes far from the box asked about, which a query would visit
-    // only to pass over
+    // only to pass over. The coarsening starts from the region's volume
+    // (its longest side over the cube root of the cells would make the
+    // cells of a long channel several times too large)
     cellSize_ *= 0.5;
     const vector span(region_.span());
     const scalar maxCells = max(64, 8*boxes.size());
-    cellSize_ = max(cellSize_, cmptMax(span)/std::cbrt(maxCells));
+    cellSize_ = max
+    (
+        cellSize_,
+        max
+        (
+            std::cbrt(span.x()*span.y()*span.z()/maxCells),
+            cmptMax(span)/maxCells
+        )
+    );
     for (;;)
     {
         for (direction d = 0; d < vector::nComponents; ++d)

@@ -199,7 +199,10 @@ void Foam::polymer::sweptBoxGrid::addPair
 void Foam::polymer::sweptBoxGrid::layCells(const label nRods)
 {
     // Cells of the largest box's span over the boxes' bounds, coarsened
-    // where the rods are sparse so that the cells are at most eight a rod
+    // where the rods are sparse so that the cells are at most eight a rod,
+    // starting from the bounds' volume (their longest side over the cube
+    // root of the cells would make the cells of a long channel several
+    // times too large)
     region_ = bounds_;
     if (!nRods)
     {
@@ -207,7 +210,15 @@ void Foam::polymer::sweptBoxGrid::layCells(const label nRods)
     }
     const vector span(region_.span());
     const scalar maxCells = max(64, 8*nRods);
-    cellSize_ = max(cellSize_, cmptMax(span)/std::cbrt(maxCells));
+    cellSize_ = max
+    (
+        cellSize_,
+        max
+        (
+            std::cbrt(span.x()*span.y()*span.z()/maxCells),
+            cmptMax(span)/maxCells
+        )
+    );
     for (;;)
     {
         for (direction d = 0; d < vector::nComponents; ++d)
