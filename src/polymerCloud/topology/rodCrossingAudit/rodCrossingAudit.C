@@ -342,6 +342,13 @@ Foam::polymer::rodCrossingAudit::check
     const boolList& rodsToCheck
 ) const
 {
+    // No rod to check (a pass after the contacts that placed no zone):
+    // no boxes or grid to build
+    if (!rodsToCheck.empty() && !rodsToCheck.found(true))
+    {
+        return List<crossing>();
+    }
+
     // Boxes swept over the whole path
     List<boundBox> boxes(rods_.size());
     forAll(rods_, rodi)
