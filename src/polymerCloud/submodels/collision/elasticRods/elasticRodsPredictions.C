@@ -216,6 +216,21 @@ void Foam::polymer::collisionModels::elasticRods::predict
         }
         queue_.push(e);
     }
+    else
+    {
+        // No crossing over the rest: none either while the beads' paths
+        // drift less than V's distance from zero allows (a budget as an
+        // apart pair's), kept clear of the contacts' band of V
+        const scalar keep = pair.signKeepingDrift
+        (
+            rest, 2000*pairContacts::tolerance(pair)
+        );
+        if (keep > 0)
+        {
+            pairBudget_[pairi] = keep + pairDrift(pairi);
+            limitDrift(pairi);
+        }
+    }
 }
 
 

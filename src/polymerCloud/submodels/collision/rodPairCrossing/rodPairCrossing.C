@@ -12,6 +12,8 @@ License
 
 #include "rodPairCrossing.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::polymer::rodPairCrossing::rodPairCrossing
@@ -61,6 +63,88 @@ Foam::scalar Foam::polymer::rodPairCrossing::tripleProduct(const scalar s) const
     const vector b = (x[1] + s*v[1]) - (x[0] + s*v[0]);
     const vector c = (x[3] + s*v[3]) - (x[2] + s*v[2]);
     return p & (b ^ c);
+}
+
+
+Foam::scalar Foam::polymer::rodPairCrossing::signKeepingDrift
+(
+    const scalar T,
+    const scalar margin
+) const
+{
+    // The smallest |V| over [0, T]: at the ends and at V's turning points
+    // between them (V is monotone between its turning points); none if V
+    // changes sign there
+    const scalar V0 = tripleProduct(0);
+    scalar lowest = mag(V0);
+    const auto sameSign = [&](const scalar s)
+    {
+        const scalar V = tripleProduct(s);
+        lowest = min(lowest, mag(V));
+        return V != 0 && (V < 0) == (V0 < 0);
+    };
+    if (V0 == 0 || !sameSign(T))
+    {
+        return 0;
+    }
+
+    // Turning points: the roots of V' = c1 + 2 c2 s + 3 c3 s^2 in (0, T)
+    const FixedList<scalar, 4> c = tripleProductCubic();
+    const scalar a = 3*c[3], b = 2*c[2];
+    FixedList<scalar, 2> turning({-1, -1});
+    if (a == 0)
+    {
+        turning[0] = (b != 0) ? -c[1]/b : -1;
+    }
+    else
+    {
+        const scalar discriminant = b*b - 4*a*c[1];
+        if (discriminant >= 0)
+        {
+            // The root of larger magnitude first, the other from their
+            // product: no cancellation
+            const scalar q =
+                -0.5*(b + (b < 0 ? -1 : 1)*std::sqrt(discriminant));
+            turning[0] = q/a;
+            turning[1] = (q != 0) ? c[1]/q : -1;
+        }
+    }
+    for (const scalar s : turning)
+    {
+        if (s > 0 && s < T && !sameSign(s))
+        {
+            return 0;
+        }
+    }
+
+    // Three quarters of the smallest |V| (a quarter for the turning
+    // points' and V's round-off) less the margin is what the paths'
+    // departures may change V by. With departures summing to D, the
+    // vectors p = x_i - x_j, b and c of V = p.(b x c) change by at most D
+    // each, so V by at most D (P + D Q + D^2), P = |b||c| + |p|(|b| + |c|),
+    // Q = |p| + |b| + |c| (their largest over [0, T], at an end: each is
+    // linear in s). D = allowed/(P + D0 Q + D0^2) with D0 = allowed/P, the
+    // larger, keeps that within allowed
+    const scalar allowed = 0.75*lowest - margin;
+    if (allowed <= 0)
+    {
+        return 0;
+    }
+    const auto largest = [&](const label k0, const label k1)
+    {
+        return max
+        (
+            mag(x[k1] - x[k0]),
+            mag((x[k1] + T*v[k1]) - (x[k0] + T*v[k0]))
+        );
+    };
+    const scalar pMax = largest(2, 0);
+    const scalar bMax = largest(0, 1);
+    const scalar cMax = largest(2, 3);
+    const scalar P = bMax*cMax + pMax*(bMax + cMax);
+    const scalar Q = pMax + bMax + cMax;
+    const scalar D0 = allowed/P;
+    return allowed/(P + D0*Q + D0*D0);
 }
 
 
