@@ -69,11 +69,18 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
         edgeBudget_[rod] = clearance + rodDrift(rod);
         return;
     }
-    edgeBudget_[rod] = -GREAT;
+    // Else the edges near the path, looked up in a box wider than the
+    // path's by a margin: the edges beyond it are farther than that. The
+    // rod keeps a budget while every edge has one: the margin, the
+    // clearance of an edge it stays apart from, the drift that keeps V's
+    // sign with an edge found uncrossed; none with an edge it meets
+    const scalar margin = growMargin(rod, t, dt);
+    const vector fat(vector::uniform(margin));
+    scalar budget = margin;
     for
     (
         const label edgei
-      : edges.near(boundBox(box.min() + shift, box.max() + shift))
+      : edges.near(boundBox(box.min() + shift - fat, box.max() + shift + fat))
     )
     {
         // An edge is a rod that does not move: one the rod stays apart
@@ -89,6 +96,7 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
             )
         )
         {
+            budget = min(budget, clearance);
             continue;
         }
 
@@ -107,8 +115,14 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
         ++counters_.pairChecks;
         if (s < 0)
         {
+            budget = min
+            (
+                budget,
+                pair.signKeepingDrift(rest, 2000*pairContacts::tolerance(pair))
+            );
             continue;
         }
+        budget = 0;
 
         event e;
         e.time = t + s;
@@ -123,6 +137,7 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
         e.beads = FixedList<label, 4>({a0, a1, -1, -1});
         queue_.push(e);
     }
+    edgeBudget_[rod] = (budget > 0) ? budget + rodDrift(rod) : -GREAT;
 }
 
 
