@@ -26,7 +26,14 @@ Description
       wall model's clearance enters a face, and where the voxels give
       less than half the distance to the walls (within the reach asked),
       it gives more for at least nine points in ten (flat walls: the
-      planes' distance).
+      planes' distance);
+    - the faces' bounds from a segment (boundaryFaces::pathClearance) are
+      never farther than the nearest face from any of 26 points along it
+      (5000 random segments up to 0.5 long), nor than the reach asked; a
+      segment of no length has the point's bounds; the wall model's path
+      clearance lets no segment whose ends are moved by less enter a
+      face, and it is positive for nine in ten of the segments that enter
+      none.
 \*---------------------------------------------------------------------------*/
 
 #include "wallScenes.H"
@@ -209,6 +216,66 @@ TEST(wallClearance, NearTheWallsNoPathWithinItEntersAFace)
         << " more clearance than the voxels'" << endl;
     EXPECT_GT(within, 5000);
     EXPECT_GT(found, 0.9*nearWalls);
+}
+
+
+TEST(wallClearance, NoPathNearerThanThePathClearanceEntersAFace)
+{
+    const fvMesh* mesh = meshOf("wallL");
+    ASSERT_TRUE(mesh);
+    const boundaryFaces faces(*mesh, 0);
+    autoPtr<wallModel> wall = newWall(*mesh, "meshFaces");
+
+    std::mt19937_64 engine(29);
+    std::normal_distribution<scalar> normal(0, 1);
+    std::uniform_real_distribution<scalar> u(0, 1);
+    const auto unit = [&]()
+    {
+        vector direction(normal(engine), normal(engine), normal(engine));
+        return direction/mag(direction);
+    };
+    label clear = 0, positive = 0;
+    for (label i = 0; i < 5000; ++i)
+    {
+        const point p(fluidPoint(engine));
+        const vector path(0.5*u(engine)*unit());
+        const scalar reach = 0.5*u(engine);
+
+        // No farther than the nearest face from points along the segment
+        const scalar bound = faces.pathClearance(p, p + path, reach);
+        ASSERT_GE(bound, 0) << "from " << str(p);
+        ASSERT_LE(bound, reach + 1e-12) << "from " << str(p);
+        for (label k = 0; k <= 25; ++k)
+        {
+            const point q(p + (k/25.0)*path);
+            const pointIndexHit nearest = faces.nearest(q, GREAT);
+            ASSERT_TRUE(nearest.hit());
+            ASSERT_LE(bound, mag(nearest.hitPoint() - q) + 1e-12)
+                << "segment " << str(p) << ' ' << str(p + path);
+        }
+        EXPECT_EQ(faces.pathClearance(p, p, reach), faces.clearance(p, reach));
+
+        // Segments that enter no face: one moved by less than the wall
+        // model's clearance enters none either
+        if (faces.firstEntered(p, p + path).hit())
+        {
+            continue;
+        }
+        ++clear;
+        const scalar keep = wall->pathClearance(p, path, 1, reach);
+        ASSERT_LE(keep, bound);
+        positive += keep > 0;
+        if (keep > 0)
+        {
+            const vector off0(0.999*keep*u(engine)*unit());
+            const vector off1(0.999*keep*u(engine)*unit());
+            EXPECT_FALSE(faces.firstEntered(p + off0, p + path + off1).hit())
+                << "segment " << str(p + off0) << ' ' << str(p + path + off1);
+        }
+    }
+    Info<< "path clearance: " << positive << " of " << clear
+        << " segments entering no face have one" << endl;
+    EXPECT_GT(positive, 0.9*clear);
 }
 
 

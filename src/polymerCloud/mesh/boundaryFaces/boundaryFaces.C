@@ -355,6 +355,50 @@ Foam::scalar Foam::polymer::boundaryFaces::clearance
 }
 
 
+Foam::scalar Foam::polymer::boundaryFaces::pathClearance
+(
+    const point& p0,
+    const point& p1,
+    const scalar reach
+) const
+{
+    // A face nearer than reach to the segment has a point in its box
+    // widened by reach, so its bounds overlap that and the tree lists it
+    if (!tree_.valid() || !(reach > 0))
+    {
+        return max(reach, 0);
+    }
+    const vector half(vector::uniform(reach));
+    const vector segment(p1 - p0);
+    const scalar lengthSqr = magSqr(segment);
+    scalar lowest = reach;
+    for
+    (
+        const label facei
+      : tree_->findBox(treeBoundBox(min(p0, p1) - half, max(p0, p1) + half))
+    )
+    {
+        // The plane: the segment's distance from it, where it stays on
+        // one side (a linear function: least at an end)
+        const vector d0(p0 - centres_[facei]);
+        const scalar h0 = normals_[facei] & d0;
+        const scalar h1 = normals_[facei] & (p1 - centres_[facei]);
+        const scalar plane =
+            ((h0 > 0) == (h1 > 0) && h0 != 0 && h1 != 0)
+          ? min(mag(h0), mag(h1)) - warps_[facei]
+          : -warps_[facei];
+
+        // The centre: its distance from the segment's nearest point
+        const scalar along =
+            lengthSqr > 0 ? min(max(-(d0 & segment)/lengthSqr, 0), 1) : 0;
+        const scalar centre = mag(d0 + along*segment) - radii_[facei];
+
+        lowest = min(lowest, max(plane, centre));
+    }
+    return max(lowest, 0);
+}
+
+
 Foam::pointIndexHit Foam::polymer::boundaryFaces::nearest
 (
     const point& p,

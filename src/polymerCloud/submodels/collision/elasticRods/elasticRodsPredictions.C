@@ -286,7 +286,18 @@ void Foam::polymer::collisionModels::elasticRods::predictWall
     wallBudget_[bead] = -GREAT;
 
     wallModel::impact hit;
-    if (wall_->predict(x, velocity_[bead], dt - t, hit))
+    if (!wall_->predict(x, velocity_[bead], dt - t, hit))
+    {
+        // No impact: none either while the path drifts less than its
+        // clearance from the walls, sought up to the path's length
+        const scalar keep =
+            wall_->pathClearance(x, velocity_[bead], dt - t, path);
+        if (keep > 0)
+        {
+            wallBudget_[bead] = keep + drift_[bead];
+        }
+    }
+    else
     {
         event e;
         e.time = t + hit.time;
