@@ -334,24 +334,8 @@ Foam::scalar Foam::polymer::boundaryFaces::clearance
     const scalar reach
 ) const
 {
-    // A face nearer than reach has a point in the cube of half-width reach
-    // about p, so its bounds overlap the cube and the tree lists it
-    if (!tree_.valid() || !(reach > 0))
-    {
-        return max(reach, 0);
-    }
-    const vector half(vector::uniform(reach));
-    scalar lowest = reach;
-    for (const label facei : tree_->findBox(treeBoundBox(p - half, p + half)))
-    {
-        const vector d(p - centres_[facei]);
-        lowest = min
-        (
-            lowest,
-            max(mag(normals_[facei] & d) - warps_[facei], mag(d) - radii_[facei])
-        );
-    }
-    return max(lowest, 0);
+    // A path of no length: the planes' and centres' bounds at p
+    return pathClearance(p, p, reach);
 }
 
 

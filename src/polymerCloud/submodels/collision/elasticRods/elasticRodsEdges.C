@@ -118,7 +118,7 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
             budget = min
             (
                 budget,
-                pair.signKeepingDrift(rest, 2000*pairContacts::tolerance(pair))
+                pair.signKeepingDrift(rest, pairContacts::bandMargin(pair))
             );
             continue;
         }

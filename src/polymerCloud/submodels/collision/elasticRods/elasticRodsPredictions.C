@@ -221,10 +221,8 @@ void Foam::polymer::collisionModels::elasticRods::predict
         // No crossing over the rest: none either while the beads' paths
         // drift less than V's distance from zero allows (a budget as an
         // apart pair's), kept clear of the contacts' band of V
-        const scalar keep = pair.signKeepingDrift
-        (
-            rest, 2000*pairContacts::tolerance(pair)
-        );
+        const scalar keep =
+            pair.signKeepingDrift(rest, pairContacts::bandMargin(pair));
         if (keep > 0)
         {
             pairBudget_[pairi] = keep + pairDrift(pairi);

@@ -57,13 +57,10 @@ Foam::scalar Foam::polymer::wallModels::meshFaces::pathClearance
         return 0;
     }
 
-    // Less a relative 1e-6 and the round-off of the coordinates, as
-    // faceDistance's bound: no path nearer enters a face in the path
-    // search's own arithmetic
     const scalar bound = faces().pathClearance(x, x + T*v, reach);
     return max
     (
-        bound*(1 - 1e-6) - 1e-9*(cmptMax(cmptMag(x)) + T*mag(v) + reach),
+        searchSafe(bound, cmptMax(cmptMag(x)) + T*mag(v) + reach),
         0
     );
 }

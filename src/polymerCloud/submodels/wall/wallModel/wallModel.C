@@ -153,13 +153,11 @@ Foam::scalar Foam::polymer::wallModel::faceDistance
         return voxels;
     }
 
-    // Less a relative 1e-6 and the round-off of the coordinates, so that
-    // no path shorter enters a face in the path search's own arithmetic
     const scalar bound = faces().clearance(image, reach);
     return max
     (
         voxels,
-        bound*(1 - 1e-6) - 1e-9*(cmptMax(cmptMag(image)) + reach)
+        searchSafe(bound, cmptMax(cmptMag(image)) + reach)
     );
 }
 
