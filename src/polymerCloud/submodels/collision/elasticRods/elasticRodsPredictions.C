@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "elasticRods.H"
+#include "segmentDistance.H"
 
 #include <cmath>
 
@@ -90,11 +91,10 @@ bool Foam::polymer::collisionModels::elasticRods::sweptApart
             closing = max(closing, magSqr(moved[i] - moved[j]));
         }
     }
-    point onA, onB;
-    const scalar distance =
-        linePointRef(x[0], x[1]).nearestDist(linePointRef(x[2], x[3]), onA, onB);
     const scalar reach = std::sqrt(closing);
-    clearance = distance - (reach + margin);
+    clearance =
+        std::sqrt(segmentDistanceSqr(x[0], x[1], x[2], x[3]))
+      - (reach + margin);
     if (clearance > 0)
     {
         return true;
@@ -103,24 +103,27 @@ bool Foam::polymer::collisionModels::elasticRods::sweptApart
     // Or the distance at the middles of pieces of the rest more than the
     // rods can close over half a piece: rods close in on each other over
     // a step, but seldom meet
-    scalar lowest = GREAT;
+    const scalar pieceReach = 0.5*reach/nApartPieces + margin;
+    scalar lowestSqr = GREAT;
     for (label k = 0; k < nApartPieces; ++k)
     {
         const scalar s = (k + 0.5)/nApartPieces;
-        lowest = min
+        lowestSqr = min
         (
-            lowest,
-            linePointRef(x[0] + s*moved[0], x[1] + s*moved[1]).nearestDist
+            lowestSqr,
+            segmentDistanceSqr
             (
-                linePointRef(x[2] + s*moved[2], x[3] + s*moved[3]), onA, onB
+                x[0] + s*moved[0], x[1] + s*moved[1],
+                x[2] + s*moved[2], x[3] + s*moved[3]
             )
         );
-        clearance = lowest - (0.5*reach/nApartPieces + margin);
-        if (clearance <= 0)
+        if (!(lowestSqr > sqr(pieceReach)))
         {
+            clearance = std::sqrt(lowestSqr) - pieceReach;
             return false;
         }
     }
+    clearance = std::sqrt(lowestSqr) - pieceReach;
     return true;
 }
 
