@@ -12,6 +12,8 @@ License
 
 #include "collisionEventQueue.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::label Foam::polymer::collisionEventQueue::stamp
@@ -35,7 +37,8 @@ Foam::label Foam::polymer::collisionEventQueue::stamp
 
 void Foam::polymer::collisionEventQueue::reset(const label nBeads)
 {
-    queue_ = std::priority_queue<event>();
+    events_.clear();
+    heap_.clear();
     version_.resize(nBeads);
     version_ = 0;
 }
@@ -44,18 +47,22 @@ void Foam::polymer::collisionEventQueue::reset(const label nBeads)
 void Foam::polymer::collisionEventQueue::push(event e)
 {
     e.stamp = stamp(e.beads);
-    queue_.push(e);
+    heap_.push_back(entry{e.time, label(events_.size())});
+    events_.push_back(e);
+    std::push_heap(heap_.begin(), heap_.end());
 }
 
 
 bool Foam::polymer::collisionEventQueue::next(event& e)
 {
-    while (!queue_.empty())
+    while (!heap_.empty())
     {
-        e = queue_.top();
-        queue_.pop();
-        if (stamp(e.beads) == e.stamp)
+        std::pop_heap(heap_.begin(), heap_.end());
+        const event& top = events_[heap_.back().index];
+        heap_.pop_back();
+        if (stamp(top.beads) == top.stamp)
         {
+            e = top;
             return true;
         }
     }
