@@ -271,34 +271,34 @@ void Foam::polymer::collisionModels::elasticRods::predictWall
     const scalar dt
 )
 {
-    // A path shorter than the walls' clearance meets none (as predict
-    // finds), nor does a path that drifts from it by less than the rest.
-    // Near a wall the clearance is sought down to twice the path: a bead
-    // held against a wall by its chain is predicted again at every
-    // impulse on the chain
+    // A path shorter than the walls' clearance (the voxels' far from the
+    // walls) meets none (as predict finds), nor does a path that drifts
+    // from it by less than the rest
     const point x(positionAt(bead, t));
     const scalar path = (dt - t)*mag(velocity_[bead]);
-    const scalar clearance = wall_->clearance(x, 2*path);
+    const scalar clearance = wall_->clearance(x, 0);
     if (path < clearance)
     {
         wallBudget_[bead] = clearance - path + drift_[bead];
         return;
     }
+
+    // Near a wall, the faces' clearance from the path itself, sought up
+    // to the path's length: a bead held against a wall by its chain is
+    // predicted again at every impulse on the chain, and one search of
+    // the faces' bounds clears a path that stays off the wall; only the
+    // others are cast as rays
+    const scalar keep =
+        wall_->pathClearance(x, velocity_[bead], dt - t, path);
+    if (keep > 0)
+    {
+        wallBudget_[bead] = keep + drift_[bead];
+        return;
+    }
     wallBudget_[bead] = -GREAT;
 
     wallModel::impact hit;
-    if (!wall_->predict(x, velocity_[bead], dt - t, hit))
-    {
-        // No impact: none either while the path drifts less than its
-        // clearance from the walls, sought up to the path's length
-        const scalar keep =
-            wall_->pathClearance(x, velocity_[bead], dt - t, path);
-        if (keep > 0)
-        {
-            wallBudget_[bead] = keep + drift_[bead];
-        }
-    }
-    else
+    if (wall_->predict(x, velocity_[bead], dt - t, hit))
     {
         event e;
         e.time = t + hit.time;
