@@ -80,6 +80,11 @@ Foam::polymer::forceModels::electrophoretic::electrophoretic
     Info<< "electrophoretic: solving laplacian(" << potential_.name()
         << ") = 0 for the electric field" << endl;
 
+    // From a zero guess: the field read is a guess only, and at a restart
+    // it is the written solution, whose guess would end the solve
+    // elsewhere within its tolerance; from zero, a restart solves the
+    // same system from the same start and continues bit for bit
+    potential_.primitiveFieldRef() = Zero;
     fvScalarMatrix laplace(fvm::laplacian(potential_));
     laplace.solve();
 
