@@ -40,6 +40,7 @@ Description
 #include "cellLocator.H"
 #include "beadSampler.H"
 #include "interpolation.H"
+#include "volPointInterpolation.H"
 
 #include <random>
 
@@ -189,6 +190,28 @@ TEST(beadSampler, KeepsEachBeadsTetThroughMovesAndReorders)
     (
         interpolation<vector>::New("cellPoint", mesh->C())
     );
+
+    // A field that varies within a cell: its cellPoint interpolation from
+    // the point values and the beads' kept triangles is
+    // interpolationCellPoint's to the bit
+    volVectorField wavy
+    (
+        IOobject("wavy", mesh->time().timeName(), *mesh),
+        mesh->C()
+    );
+    for (vector& w : wavy.primitiveFieldRef())
+    {
+        w = vector(Foam::sin(w.x()/h), Foam::cos(w.y()/h), w.x()*w.z()/(h*h));
+    }
+    const autoPtr<interpolation<vector>> wavyCellPoint
+    (
+        interpolation<vector>::New("cellPoint", wavy)
+    );
+    const tmp<pointVectorField> wavyPoints
+    (
+        volPointInterpolation::New(*mesh).interpolate(wavy)
+    );
+
     label nChecked = 0;
     label nSampled = 0;
     for (label round = 0; round < 20; ++round)
@@ -196,6 +219,10 @@ TEST(beadSampler, KeepsEachBeadsTetThroughMovesAndReorders)
         sampler.locate(chains);
         List<vector> sampled(chains.positions().size());
         sampler.sample(centres(), sampled);
+        List<vector> wavyGeneric(sampled.size());
+        List<vector> wavyKept(sampled.size());
+        sampler.sample(wavyCellPoint(), wavyGeneric);
+        sampler.sample(wavy, wavyPoints(), wavyKept);
         const List<tetIndices>& tets = sampler.hostTets();
         forAll(chains.positions(), i)
         {
@@ -216,6 +243,8 @@ TEST(beadSampler, KeepsEachBeadsTetThroughMovesAndReorders)
                     << "round " << round << " bead " << i << str(p);
                 ++nSampled;
             }
+            EXPECT_EQ(wavyKept[i], wavyGeneric[i])
+                << "round " << round << " bead " << i << str(p);
         }
 
         // Moves within the box, a new order, one chain fewer, one more

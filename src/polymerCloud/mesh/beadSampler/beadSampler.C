@@ -72,6 +72,7 @@ Foam::polymer::beadSampler::beadSampler(const fvMesh& mesh)
     hostTets_(tetIndices()),
     hostCoordinates_(),
     hostTransforms_(tetTransform()),
+    hostTriangles_(triFace(-1, -1, -1)),
     leaverTets_(),
     leaverBeads_(),
     leaverPoints_(),
@@ -159,6 +160,7 @@ void Foam::polymer::beadSampler::prefetchBead
 #if defined(__GNUC__)
     __builtin_prefetch(&hostTets_.values()[i], 1);
     __builtin_prefetch(&hostCoordinates_[i], 1);
+    __builtin_prefetch(&hostTriangles_.values()[i], 1);
     if (withTransform)
     {
         // A transform spans three cache lines at most: its first, middle
@@ -173,12 +175,52 @@ void Foam::polymer::beadSampler::prefetchBead
 }
 
 
+void Foam::polymer::beadSampler::prefetchPointValues
+(
+    const vectorField& cellValues,
+    const vectorField& pointValues,
+    const label k
+) const
+{
+#if defined(__GNUC__)
+    if (k >= cellOrder_.size())
+    {
+        return;
+    }
+    const label i = cellOrder_[k];
+    const label celli = hostTets_.values()[i].cell();
+    if (celli < 0)
+    {
+        return;
+    }
+    const triFace& tri = hostTriangles_.values()[i];
+    __builtin_prefetch(&cellValues[celli]);
+    __builtin_prefetch(&pointValues[tri[0]]);
+    __builtin_prefetch(&pointValues[tri[1]]);
+    __builtin_prefetch(&pointValues[tri[2]]);
+#endif
+}
+
+
+void Foam::polymer::beadSampler::keepTet
+(
+    const tetIndices& tet,
+    tetTransform& transform,
+    triFace& triangle
+) const
+{
+    triangle = tet.faceTriIs(mesh_);
+    transform = locator_.transform(tet.cell(), triangle);
+}
+
+
 void Foam::polymer::beadSampler::locateUntracked
 (
     const polymerChains& chains,
     const label nUntracked,
     List<tetIndices>& hostTet,
-    List<tetTransform>& transform
+    List<tetTransform>& transform,
+    List<triFace>& triangle
 )
 {
     // A bead with no tet (the first locate, a new chain, a bead back from
@@ -206,7 +248,7 @@ void Foam::polymer::beadSampler::locateUntracked
           : tetIndices();
         if (hostTet[i].cell() >= 0)
         {
-            transform[i] = locator_.transform(hostTet[i]);
+            keepTet(hostTet[i], transform[i], triangle[i]);
         }
     }
 }
@@ -253,7 +295,8 @@ void Foam::polymer::beadSampler::findLeavers
 void Foam::polymer::beadSampler::searchLeavers
 (
     List<tetIndices>& hostTet,
-    List<tetTransform>& transform
+    List<tetTransform>& transform,
+    List<triFace>& triangle
 )
 {
     // In the order of their last cells, with the mesh data of the leavers
@@ -284,7 +327,7 @@ void Foam::polymer::beadSampler::searchLeavers
             );
         if (hostTet[i].cell() >= 0)
         {
-            transform[i] = locator_.transform(hostTet[i]);
+            keepTet(hostTet[i], transform[i], triangle[i]);
         }
     }
 }
@@ -294,7 +337,8 @@ void Foam::polymer::beadSampler::locateHere
 (
     const polymerChains& chains,
     List<tetIndices>& hostTet,
-    List<tetTransform>& transform
+    List<tetTransform>& transform,
+    List<triFace>& triangle
 )
 {
     // A bead outside this processor's bounding box is in another's mesh,
@@ -302,9 +346,9 @@ void Foam::polymer::beadSampler::locateHere
     // from their neighbours' tets as the last locate left them), then
     // those that left their tet
     const label nUntracked = orderByCell(hostTet, cellOrder_);
-    locateUntracked(chains, nUntracked, hostTet, transform);
+    locateUntracked(chains, nUntracked, hostTet, transform, triangle);
     findLeavers(chains.positions(), hostTet, transform);
-    searchLeavers(hostTet, transform);
+    searchLeavers(hostTet, transform, triangle);
 }
 
 
@@ -474,6 +518,7 @@ void Foam::polymer::beadSampler::locate(const polymerChains& chains)
     const List<vector>& x = chains.positions();
     List<tetIndices>& hostTet = hostTets_.update(chains);
     List<tetTransform>& hostTransform = hostTransforms_.update(chains);
+    List<triFace>& hostTriangle = hostTriangles_.update(chains);
     labelList& owner = remoteOwners_.update(chains);
     List<tetIndices>& remoteTet = remoteTets_.update(chains);
 
@@ -487,7 +532,7 @@ void Foam::polymer::beadSampler::locate(const polymerChains& chains)
         locatedBeads_[proci].clear();
     }
 
-    locateHere(chains, hostTet, hostTransform);
+    locateHere(chains, hostTet, hostTransform, hostTriangle);
 
     forAll(hostTet, i)
     {
@@ -545,49 +590,69 @@ void Foam::polymer::beadSampler::sample
           : Zero;
     }
 
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-
-    // The values at the beads located for other processors, to them; the
-    // values at this one's unheld beads, from the processors holding them
-    // (both sides know how many)
-    clockTime clock;
-    const labelList& neighbours = neighbours_.neighbours();
-    List<List<vector>> send(neighbours.size());
-    List<List<vector>> recv(neighbours.size());
-    forAll(neighbours, k)
-    {
-        const label proci = neighbours[k];
-        const DynamicList<tetIndices>& tets = answeredTets_[proci];
-        const DynamicList<barycentric>& coordinates =
-            answeredCoordinates_[proci];
-        send[k].setSize(tets.size());
-        forAll(tets, m)
+    exchangeSampled
+    (
+        [&field](const barycentric& coordinates, const tetIndices& tet)
         {
-            send[k][m] = field.interpolate(coordinates[m], tets[m]);
-        }
-        recv[k].setSize(locatedBeads_[proci].size());
-    }
-    neighbours_.exchangeKnownSizes(send, recv);
+            return field.interpolate(coordinates, tet);
+        },
+        values
+    );
+}
 
-    // A bead on the face between two processors' meshes is found by both:
-    // the value of the one holding it
-    const labelList& owner = remoteOwners_.values();
-    forAll(neighbours, k)
+
+void Foam::polymer::beadSampler::sample
+(
+    const volVectorField& cellValues,
+    const pointVectorField& pointValues,
+    UList<vector>& values
+) const
+{
+    // interpolationCellPoint::interpolate(coordinates, tet)'s expression,
+    // its face triangle kept with the tet. In the cells' order, the point
+    // values of the beads ahead fetched (their triangles fetched before)
+    const List<tetIndices>& hostTet = hostTets_.values();
+    const List<triFace>& triangle = hostTriangles_.values();
+    const vectorField& psi = cellValues.primitiveField();
+    const vectorField& psip = pointValues.primitiveField();
+    const bool prefetching = prefetches();
+    const label nBeads = cellOrder_.size();
+    forAll(cellOrder_, k)
     {
-        const label proci = neighbours[k];
-        const DynamicList<label>& beads = locatedBeads_[proci];
-        forAll(beads, m)
+        if (prefetching)
         {
-            if (owner[beads[m]] == proci)
+            prefetchPointValues(psi, psip, k + prefetchSpacing);
+            if (k + 2*prefetchSpacing < nBeads)
             {
-                values[beads[m]] = recv[k][m];
+                prefetchBead(cellOrder_[k + 2*prefetchSpacing], false);
             }
         }
+        const label i = cellOrder_[k];
+        const label celli = hostTet[i].cell();
+        if (celli < 0)
+        {
+            values[i] = Zero;
+            continue;
+        }
+        values[i] =
+            cellPointValue(psi, psip, hostCoordinates_[i], celli, triangle[i]);
     }
-    exchangeSeconds_ += clock.elapsedTime();
+
+    exchangeSampled
+    (
+        [this, &psi, &psip]
+        (
+            const barycentric& coordinates,
+            const tetIndices& tet
+        )
+        {
+            return cellPointValue
+            (
+                psi, psip, coordinates, tet.cell(), tet.faceTriIs(mesh_)
+            );
+        },
+        values
+    );
 }
 
 

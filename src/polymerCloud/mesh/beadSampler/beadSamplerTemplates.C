@@ -82,4 +82,57 @@ void Foam::polymer::beadSampler::addToCells
 }
 
 
+template<class ValueAt>
+void Foam::polymer::beadSampler::exchangeSampled
+(
+    const ValueAt& valueAt,
+    UList<vector>& values
+) const
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    // The values at the beads located for other processors, to them; the
+    // values at this one's unheld beads, from the processors holding them
+    // (both sides know how many)
+    clockTime clock;
+    const labelList& neighbours = neighbours_.neighbours();
+    List<List<vector>> send(neighbours.size());
+    List<List<vector>> recv(neighbours.size());
+    forAll(neighbours, k)
+    {
+        const label proci = neighbours[k];
+        const DynamicList<tetIndices>& tets = answeredTets_[proci];
+        const DynamicList<barycentric>& coordinates =
+            answeredCoordinates_[proci];
+        send[k].setSize(tets.size());
+        forAll(tets, m)
+        {
+            send[k][m] = valueAt(coordinates[m], tets[m]);
+        }
+        recv[k].setSize(locatedBeads_[proci].size());
+    }
+    neighbours_.exchangeKnownSizes(send, recv);
+
+    // A bead on the face between two processors' meshes is found by both:
+    // the value of the one holding it
+    const labelList& owner = remoteOwners_.values();
+    forAll(neighbours, k)
+    {
+        const label proci = neighbours[k];
+        const DynamicList<label>& beads = locatedBeads_[proci];
+        forAll(beads, m)
+        {
+            if (owner[beads[m]] == proci)
+            {
+                values[beads[m]] = recv[k][m];
+            }
+        }
+    }
+    exchangeSeconds_ += clock.elapsedTime();
+}
+
+
 // ************************************************************************* //

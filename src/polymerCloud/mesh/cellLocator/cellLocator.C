@@ -414,7 +414,25 @@ Foam::polymer::tetTransform Foam::polymer::cellLocator::transform
     const tetIndices& tet
 ) const
 {
-    const tetPointRef points(tet.tet(mesh()));
+    return transform(tet.cell(), tet.faceTriIs(mesh()));
+}
+
+
+Foam::polymer::tetTransform Foam::polymer::cellLocator::transform
+(
+    const label celli,
+    const triFace& triangle
+) const
+{
+    // The tet's points as tetIndices::tet takes them
+    const pointField& meshPoints = mesh().points();
+    const tetPointRef points
+    (
+        mesh().cellCentres()[celli],
+        meshPoints[triangle[0]],
+        meshPoints[triangle[1]],
+        meshPoints[triangle[2]]
+    );
     const tensor edges(tetTransform::edgeMatrix(points));
     return tetTransform(points, edges, det(edges));
 }

@@ -15,6 +15,7 @@ License
 #include "clockTime.H"
 #include "volFields.H"
 #include "interpolation.H"
+#include "volPointInterpolation.H"
 #include "fvmSup.H"
 #include "checkedInput.H"
 #include "makePolymerModel.H"
@@ -80,11 +81,21 @@ void Foam::polymer::flowModels::field::prepare(const polymerChains& chains)
             << "    expected: U <the velocity field's name>; (default U)"
             << exit(FatalIOError);
     }
-    interpolator_ = interpolation<vector>::New
-    (
-        interpolationScheme_,
-        mesh_.lookupObject<volVectorField>(UName_)
-    );
+    const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
+    if (interpolationScheme_ == "cellPoint")
+    {
+        // As interpolationCellPoint makes its point values
+        pointVelocity_ = volPointInterpolation::New(mesh_).interpolate
+        (
+            U,
+            "volPointInterpolate(" + U.name() + ')',
+            true
+        );
+    }
+    else
+    {
+        interpolator_ = interpolation<vector>::New(interpolationScheme_, U);
+    }
 }
 
 
@@ -99,14 +110,27 @@ void Foam::polymer::flowModels::field::update(const polymerChains& chains)
 
     // The interpolation of this step's flow, built now if prepare was not
     // called since the last update
-    if (!interpolator_.valid())
+    if (!interpolator_.valid() && !pointVelocity_.valid())
     {
         prepare(chains);
     }
     sampler_.locate(chains);
     beadVelocity_.setSize(chains.nBeads());
-    sampler_.sample(interpolator_(), beadVelocity_);
-    interpolator_.clear();
+    if (pointVelocity_.valid())
+    {
+        sampler_.sample
+        (
+            mesh_.lookupObject<volVectorField>(UName_),
+            pointVelocity_(),
+            beadVelocity_
+        );
+        pointVelocity_.clear();
+    }
+    else
+    {
+        sampler_.sample(interpolator_(), beadVelocity_);
+        interpolator_.clear();
+    }
 
     // The corrector's flow: the mean of the step's start and the predicted
     // end (beads injected since have no start value)

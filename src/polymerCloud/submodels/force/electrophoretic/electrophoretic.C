@@ -13,6 +13,7 @@ License
 #include "electrophoretic.H"
 #include "fvm.H"
 #include "fvc.H"
+#include "volPointInterpolation.H"
 #include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -73,7 +74,7 @@ Foam::polymer::forceModels::electrophoretic::electrophoretic
         mesh,
         dimensionedVector(potential_.dimensions()/dimLength, Zero)
     ),
-    interpolateField_(),
+    pointField_(),
     sampler_(mesh),
     beadField_()
 {
@@ -90,7 +91,12 @@ Foam::polymer::forceModels::electrophoretic::electrophoretic
 
     field_ = -fvc::grad(potential_);
 
-    interpolateField_.reset(new interpolationCellPoint<vector>(field_));
+    pointField_ = volPointInterpolation::New(mesh).interpolate
+    (
+        field_,
+        "volPointInterpolate(" + field_.name() + ')',
+        true
+    );
 
     Info<< "    |E| from " << gMin(mag(field_)().primitiveField())
         << " to " << gMax(mag(field_)().primitiveField()) << endl;
@@ -107,7 +113,7 @@ void Foam::polymer::forceModels::electrophoretic::addForce
 {
     sampler_.locate(chains);
     beadField_.setSize(chains.nBeads());
-    sampler_.sample(interpolateField_(), beadField_);
+    sampler_.sample(field_, pointField_(), beadField_);
     forAll(beadField_, i)
     {
         force[i] += charge_*beadField_[i];
