@@ -137,6 +137,37 @@ void Foam::polymer::periodicImages::addPatch(const label patchi)
 }
 
 
+void Foam::polymer::periodicImages::setUnshiftedBox(const polyMesh& mesh)
+{
+    // The linear test (p - P).n is largest over a box at a corner, and its
+    // round-off is below 1e-15 of the bounds' diagonal for points within
+    // them: a corner below -1e-12 of the diagonal keeps the whole box
+    // inside the plane in floating point too
+    const boundBox bounds(mesh.points(), true);
+    const scalar diagonal = bounds.mag();
+    const vector margin(vector::uniform(1e-9*diagonal));
+    const boundBox box(bounds.min() + margin, bounds.max() - margin);
+    unshifted_ = boundBox::invertedBox;
+    if (!active() || !box.valid())
+    {
+        return;
+    }
+    const tmp<pointField> corners(box.points());
+    for (const point& corner : corners())
+    {
+        forAll(planePoint_, k)
+        {
+            const scalar beyond = (corner - planePoint_[k]) & planeNormal_[k];
+            if (!(beyond < -1e-12*diagonal))
+            {
+                return;
+            }
+        }
+    }
+    unshifted_ = box;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::polymer::periodicImages::periodicImages(const polyMesh& mesh)
@@ -148,7 +179,8 @@ Foam::polymer::periodicImages::periodicImages(const polyMesh& mesh)
     patch_(),
     patchTranslation_(mesh.boundaryMesh().size(), Zero),
     lattice_(),
-    imageShifts_()
+    imageShifts_(),
+    unshifted_(boundBox::invertedBox)
 {
     forAll(mesh.boundaryMesh(), patchi)
     {
@@ -169,6 +201,7 @@ Foam::polymer::periodicImages::periodicImages(const polyMesh& mesh)
         }
     }
     imageShifts_.transfer(shifts);
+    setUnshiftedBox(mesh);
 
     if (active())
     {
@@ -181,6 +214,12 @@ Foam::polymer::periodicImages::periodicImages(const polyMesh& mesh)
 // * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
 Foam::vector Foam::polymer::periodicImages::shift(const point& p) const
+{
+    return unshifted_.contains(p) ? Zero : shiftByPlanes(p);
+}
+
+
+Foam::vector Foam::polymer::periodicImages::shiftByPlanes(const point& p) const
 {
     // A point beyond several planes (a corner) needs a pass per plane; a
     // point many periods away needs more: stop after a generous number
