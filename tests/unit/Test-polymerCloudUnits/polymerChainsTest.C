@@ -4,10 +4,18 @@ Description
     their cells) change places whole, each with its beads, velocities, type
     and global id, and the layout version changes so that per-bead data is
     remapped. Exact: reordering copies values.
+
+    beadData: each bead keeps its own value through random sequences of
+    reorders (alone, two in a row, or followed by an append or removal),
+    removals and appends, read at every change or every few; a new
+    chain's beads are unknown.
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
 #include "testHelpers.H"
+#include "beadData.H"
+
+#include <random>
 
 using namespace Foam;
 using namespace Foam::polymer;
@@ -67,6 +75,79 @@ TEST(polymerChains, ReorderMovesWholeChains)
 // in rod lengths squared, tau = m/zeta; its limits 12 kT dt/(zeta a^2) for
 // dt >> tau (diffusive) and 6 kT dt^2/(m a^2) for dt << tau (ballistic),
 // each to its first correction (relative tau/dt and dt/(3 tau))
+TEST(beadData, FollowsEachBeadThroughReordersRemovalsAndAppends)
+{
+    PtrList<chainType> types(2);
+    types.set(0, new chainType("short", 3, 1, 1, 1, 1, false));
+    types.set(1, new chainType("long", 5, 1, 1, 1, 1, false));
+    polymerChains chains(types);
+    std::mt19937_64 engine(5);
+    std::uniform_real_distribution<scalar> u(0, 1);
+
+    label nextId = 0;
+    auto append = [&]()
+    {
+        const label type = (u(engine) < 0.5) ? 0 : 1;
+        const List<vector> x(types[type].nBeads(), Zero);
+        chains.append(type, nextId++, x, x);
+    };
+    for (label c = 0; c < 20; ++c)
+    {
+        append();
+    }
+
+    // A bead's value: 100 times its chain's global id plus its place in
+    // the chain, set when its chain is first seen (unknown: -1)
+    beadData<label> data(-1);
+    label nChecked = 0;
+    label nNew = 0;
+    for (label round = 0; round < 300; ++round)
+    {
+        if (u(engine) < 0.7)
+        {
+            labelList& values = data.update(chains);
+            ASSERT_EQ(values.size(), chains.nBeads());
+            for (label c = 0; c < chains.nChains(); ++c)
+            {
+                for (label k = 0; k < chains.size(c); ++k)
+                {
+                    label& value = values[chains.start(c) + k];
+                    const label expected = 100*chains.globalId(c) + k;
+                    if (value == -1)
+                    {
+                        value = expected;
+                        ++nNew;
+                    }
+                    EXPECT_EQ(value, expected)
+                        << "round " << round << " chain " << c;
+                    ++nChecked;
+                }
+            }
+        }
+
+        const scalar change = u(engine);
+        labelList newToOld(identity(chains.nChains()));
+        std::shuffle(newToOld.begin(), newToOld.end(), engine);
+        chains.reorder(newToOld);
+        if (change < 0.2)
+        {
+            append();
+        }
+        else if (change < 0.4 && chains.nChains() > 2)
+        {
+            chains.remove(labelList({label(u(engine)*chains.nChains())}));
+        }
+        else if (change < 0.5)
+        {
+            std::shuffle(newToOld.begin(), newToOld.end(), engine);
+            chains.reorder(newToOld);
+        }
+    }
+    EXPECT_GT(nChecked, 5000);
+    EXPECT_GT(nNew, 50);
+}
+
+
 TEST(chainType, NeighbourDisplacementLimits)
 {
     const scalar a = 2, m = 0.5, zeta = 4, kT = 1.5;

@@ -25,7 +25,9 @@ Foam::polymer::polymerChains::polymerChains(const PtrList<chainType>& types)
     chainStart_(1, Zero),
     chainTypeIndex_(),
     globalChainId_(),
-    layoutVersion_(0)
+    layoutVersion_(0),
+    reorderedFrom_(-1),
+    lastReorder_()
 {}
 
 
@@ -120,6 +122,8 @@ void Foam::polymer::polymerChains::remove(const labelUList& chainIndices)
 
 void Foam::polymer::polymerChains::reorder(const labelUList& newToOld)
 {
+    reorderedFrom_ = layoutVersion_;
+    lastReorder_ = newToOld;
     ++layoutVersion_;
     List<vector> positions(positions_.size());
     List<vector> velocities(velocities_.size());
