@@ -14,6 +14,7 @@ License
 #include "UIListStream.H"
 #include "allReduce.H"
 #include "clockTime.H"
+#include "volPointInterpolation.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -597,6 +598,20 @@ void Foam::polymer::beadSampler::sample
             return field.interpolate(coordinates, tet);
         },
         values
+    );
+}
+
+
+Foam::tmp<Foam::pointVectorField> Foam::polymer::beadSampler::pointValues
+(
+    const volVectorField& cellValues
+)
+{
+    return volPointInterpolation::New(cellValues.mesh()).interpolate
+    (
+        cellValues,
+        "volPointInterpolate(" + cellValues.name() + ')',
+        true
     );
 }
 

@@ -15,7 +15,6 @@ License
 #include "clockTime.H"
 #include "volFields.H"
 #include "interpolation.H"
-#include "volPointInterpolation.H"
 #include "fvmSup.H"
 #include "checkedInput.H"
 #include "makePolymerModel.H"
@@ -84,13 +83,7 @@ void Foam::polymer::flowModels::field::prepare(const polymerChains& chains)
     const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
     if (interpolationScheme_ == "cellPoint")
     {
-        // As interpolationCellPoint makes its point values
-        pointVelocity_ = volPointInterpolation::New(mesh_).interpolate
-        (
-            U,
-            "volPointInterpolate(" + U.name() + ')',
-            true
-        );
+        pointVelocity_ = beadSampler::pointValues(U);
     }
     else
     {

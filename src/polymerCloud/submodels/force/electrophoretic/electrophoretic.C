@@ -13,7 +13,6 @@ License
 #include "electrophoretic.H"
 #include "fvm.H"
 #include "fvc.H"
-#include "volPointInterpolation.H"
 #include "makePolymerModel.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -91,12 +90,7 @@ Foam::polymer::forceModels::electrophoretic::electrophoretic
 
     field_ = -fvc::grad(potential_);
 
-    pointField_ = volPointInterpolation::New(mesh).interpolate
-    (
-        field_,
-        "volPointInterpolate(" + field_.name() + ')',
-        true
-    );
+    pointField_ = beadSampler::pointValues(field_);
 
     Info<< "    |E| from " << gMin(mag(field_)().primitiveField())
         << " to " << gMax(mag(field_)().primitiveField()) << endl;
