@@ -5,8 +5,9 @@ Description
     they were predicted; chainRods lists the rods of open chains and rings
     with the rods through each bead; sweptBoxGrid finds exactly the pairs of
     non-adjacent rods whose swept boxes overlap (against all pairs tested),
-    grows a box with its new pairs, and meets rods across a periodic
-    lattice with the second rod's translation.
+    grows a box with its new pairs, meets rods across a periodic lattice
+    with the second rod's translation, and lists the pairs in an order
+    that the grid's cells do not change.
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
@@ -50,6 +51,50 @@ polymerChains twoChains(const PtrList<chainType>& types)
     chains.append(0, 7, open, List<vector>(4, Zero));
     chains.append(1, 3, ring, List<vector>(4, Zero));
     return chains;
+}
+
+
+// Chains of 5 beads at random in a 4 a cube, rods of length 1
+void appendRandomChains
+(
+    polymerChains& chains,
+    const label nChains,
+    std::mt19937_64& gen
+)
+{
+    std::uniform_real_distribution<double> u(0, 4);
+    for (label c = 0; c < nChains; ++c)
+    {
+        List<vector> x(5);
+        x[0] = vector(u(gen), u(gen), u(gen));
+        for (label i = 1; i < 5; ++i)
+        {
+            vector d(u(gen) - 2, u(gen) - 2, u(gen) - 2);
+            x[i] = x[i - 1] + d/mag(d);
+        }
+        chains.append(0, chains.nChains(), x, List<vector>(5, Zero));
+    }
+}
+
+
+// The boxes of the rods, each grown by a random margin up to 0.3
+List<boundBox> randomRodBoxes
+(
+    const polymerChains& chains,
+    const chainRods& rods,
+    std::mt19937_64& gen
+)
+{
+    std::uniform_real_distribution<double> m(0, 0.3);
+    const List<vector>& x = chains.positions();
+    List<boundBox> boxes(rods.size());
+    forAll(boxes, rod)
+    {
+        boxes[rod] = boundBox(x[rods[rod].first()]);
+        boxes[rod].add(x[rods[rod].second()]);
+        boxes[rod].inflate(m(gen));
+    }
+    return boxes;
 }
 
 } // End anonymous namespace
@@ -117,32 +162,13 @@ TEST(sweptBoxGrid, FindsExactlyTheOverlappingPairs)
     // grown by a random margin: the candidates are all non-adjacent pairs
     // whose boxes overlap, each once
     std::mt19937_64 gen(11);
-    std::uniform_real_distribution<double> u(0, 4), m(0, 0.3);
     PtrList<chainType> types(1);
     types.set(0, new chainType("five", 5, 1, 1, 1, 1, false));
     polymerChains chains(types);
-    for (label c = 0; c < 30; ++c)
-    {
-        List<vector> x(5);
-        x[0] = vector(u(gen), u(gen), u(gen));
-        for (label i = 1; i < 5; ++i)
-        {
-            vector d(u(gen) - 2, u(gen) - 2, u(gen) - 2);
-            x[i] = x[i - 1] + d/mag(d);
-        }
-        chains.append(0, c, x, List<vector>(5, Zero));
-    }
+    appendRandomChains(chains, 30, gen);
     chainRods rods;
     rods.update(chains);
-
-    List<boundBox> boxes(rods.size());
-    forAll(boxes, rod)
-    {
-        const List<vector>& x = chains.positions();
-        boxes[rod] = boundBox(x[rods[rod].first()]);
-        boxes[rod].add(x[rods[rod].second()]);
-        boxes[rod].inflate(m(gen));
-    }
+    const List<boundBox> boxes(randomRodBoxes(chains, rods, gen));
 
     sweptBoxGrid grid;
     grid.build(rods, List<boundBox>(boxes), List<vector>());
@@ -215,6 +241,77 @@ TEST(sweptBoxGrid, MeetsAcrossThePeriodicLattice)
     ASSERT_EQ(grid.pairs().size(), 1);
     EXPECT_EQ(grid.pairs()[0], labelPair(0, 1));
     EXPECT_EQ(grid.pairShift(0), vector(-10, 0, 0));
+}
+
+
+TEST(sweptBoxGrid, ListsThePairsInAnOrderTheCellsDoNotChange)
+{
+    // The same 60 chains alone, and with a far chain appended: the far
+    // rods stretch the bounds the cells are laid over a thousandfold, so
+    // the cells of the two grids differ, but the far rods (inserted last)
+    // meet no other. The pairs, their translations and each rod's pairs
+    // must come in the same order, built and after growing boxes, plain
+    // and across a periodic lattice
+    std::mt19937_64 gen(23);
+    PtrList<chainType> types(1);
+    types.set(0, new chainType("five", 5, 1, 1, 1, 1, false));
+    polymerChains near(types);
+    appendRandomChains(near, 60, gen);
+    polymerChains withFar(near);
+    withFar.append
+    (
+        0, 60,
+        List<vector>({{1000, 1000, 1000}, {1001, 1000, 1000},
+            {1001, 1001, 1000}, {1001, 1001, 1001}, {1002, 1001, 1001}}),
+        List<vector>(5, Zero)
+    );
+    chainRods nearRods, allRods;
+    nearRods.update(near);
+    allRods.update(withFar);
+    const List<boundBox> nearBoxes(randomRodBoxes(near, nearRods, gen));
+    List<boundBox> allBoxes(randomRodBoxes(withFar, allRods, gen));
+    forAll(nearBoxes, rod)
+    {
+        allBoxes[rod] = nearBoxes[rod];
+    }
+
+    const auto expectSameLists =
+        [&](const sweptBoxGrid& a, const sweptBoxGrid& b)
+    {
+        ASSERT_EQ(a.pairs().size(), b.pairs().size());
+        forAll(a.pairs(), pairi)
+        {
+            EXPECT_EQ(a.pairs()[pairi], b.pairs()[pairi]) << "pair " << pairi;
+            EXPECT_EQ(a.pairShift(pairi), b.pairShift(pairi));
+        }
+        for (label rod = 0; rod < nearRods.size(); ++rod)
+        {
+            EXPECT_EQ(a.rodPairs(rod), b.rodPairs(rod)) << "rod " << rod;
+        }
+    };
+
+    for (const List<vector>& lattice :
+        {List<vector>(), List<vector>({vector(4, 0, 0), vector(0, 4, 0)})})
+    {
+        sweptBoxGrid nearGrid, allGrid;
+        nearGrid.build(nearRods, List<boundBox>(nearBoxes), lattice);
+        allGrid.build(allRods, List<boundBox>(allBoxes), lattice);
+        EXPECT_GT(nearGrid.pairs().size(), 200);
+        expectSameLists(nearGrid, allGrid);
+
+        // Boxes grown as events change paths: each grid lists the new
+        // pairs of a grown box in the same order
+        std::uniform_int_distribution<label> pick(0, nearRods.size() - 1);
+        for (label growth = 0; growth < 20; ++growth)
+        {
+            const label rod = pick(gen);
+            boundBox grown(nearBoxes[rod]);
+            grown.inflate(0.5 + 0.1*growth);
+            nearGrid.grow(rod, grown, 0.05);
+            allGrid.grow(rod, grown, 0.05);
+        }
+        expectSameLists(nearGrid, allGrid);
+    }
 }
 
 

@@ -115,7 +115,8 @@ void Foam::polymer::sweptBoxGrid::buildImages(const UList<vector>& lattice)
 bool Foam::polymer::sweptBoxGrid::newPairKey(const uint64_t key)
 {
     // Linear probing, at most half full
-    if (2*(size_t(pairs_.size()) + 1) > pairKeys_.size())
+    const size_t nKeys = pairs_.size() + newPairs_.size();
+    if (2*(nKeys + 1) > pairKeys_.size())
     {
         std::vector<uint64_t> keys(max(size_t(64), 2*pairKeys_.size()), noKey);
         std::swap(keys, pairKeys_);
@@ -187,12 +188,33 @@ void Foam::polymer::sweptBoxGrid::addPair
 
     if (newPairKey(key))
     {
-        const label pairi = pairs_.size();
-        pairs_.append(labelPair(rodA, rodB));
-        pairShift_.append(shift);
-        rodPairs_[rodA].push_back(pairi);
-        rodPairs_[rodB].push_back(pairi);
+        newPairs_.append(newPair{key, labelPair(rodA, rodB), shift});
     }
+}
+
+
+void Foam::polymer::sweptBoxGrid::listNewPairs()
+{
+    // The look-ups meet the partners in the order of the cells they scan,
+    // which changes with the cells' size. The pairs' order orders the
+    // first predictions, and with them the events at one time, so a run
+    // would depend on the grid's cells; in the order of their keys (the
+    // rods' indices, then the translation) it depends on the rods alone
+    std::sort
+    (
+        newPairs_.begin(),
+        newPairs_.end(),
+        [](const newPair& a, const newPair& b) { return a.key < b.key; }
+    );
+    for (const newPair& p : newPairs_)
+    {
+        const label pairi = pairs_.size();
+        pairs_.append(p.rods);
+        pairShift_.append(p.shift);
+        rodPairs_[p.rods.first()].push_back(pairi);
+        rodPairs_[p.rods.second()].push_back(pairi);
+    }
+    newPairs_.clear();
 }
 
 
@@ -434,6 +456,7 @@ void Foam::polymer::sweptBoxGrid::insert(const label rod)
     {
         query(rod, image);
     }
+    listNewPairs();
 }
 
 
