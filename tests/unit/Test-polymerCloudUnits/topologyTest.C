@@ -8,7 +8,8 @@ Description
       touch-and-continue 1, a contact at the end of a short piece 0; a
       crossing between periodic images, either way round and two lattice
       translations apart, is found only with the lattice (once, with its
-      translation), and a rod's own image does not count.
+      translation), and a rod's own image does not count; the crossings
+      of many rods come in the same order whatever the grid's cells.
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
@@ -18,6 +19,8 @@ Description
 #include "trefoil.H"
 #include "tensor.H"
 #include "mathematicalConstants.H"
+
+#include <random>
 
 using namespace Foam;
 using namespace Foam::polymer;
@@ -388,6 +391,59 @@ TEST(rodCrossingAudit, CrossingBetweenImagesFoundWithTheLattice)
        .check(start, end).size(),
         0
     );
+}
+
+
+TEST(rodCrossingAudit, ListsTheCrossingsInAnOrderTheCellsDoNotChange)
+{
+    // 200 rods of length 1 at random in a 4 a cube, each moving by up to
+    // 1 a: many crossings. With a rod appended 1000 a away (it stays put)
+    // the grid's cells are laid over a thousandfold larger region, but the
+    // crossings must be the same and listed in the same order
+    std::mt19937_64 gen(5);
+    std::uniform_real_distribution<double> u(0, 4), w(-0.5, 0.5);
+    const label nRods = 200;
+    List<point> start(2*nRods + 2), end(2*nRods + 2);
+    List<labelPair> near(nRods), all(nRods + 1);
+    for (label rod = 0; rod < nRods; ++rod)
+    {
+        const point centre(u(gen), u(gen), u(gen));
+        vector along(w(gen), w(gen), w(gen));
+        along /= 2*mag(along);
+        const vector move(w(gen), w(gen), w(gen));
+        start[2*rod] = centre - along;
+        start[2*rod + 1] = centre + along;
+        end[2*rod] =
+            start[2*rod] + move + 0.2*vector(w(gen), w(gen), w(gen));
+        end[2*rod + 1] = start[2*rod + 1] + move;
+        near[rod] = labelPair(2*rod, 2*rod + 1);
+        all[rod] = near[rod];
+    }
+    start[2*nRods] = end[2*nRods] = point(1000, 1000, 1000);
+    start[2*nRods + 1] = end[2*nRods + 1] = point(1001, 1000, 1000);
+    all[nRods] = labelPair(2*nRods, 2*nRods + 1);
+
+    for
+    (
+        const List<vector>& lattice
+      : {List<vector>(), List<vector>({vector(4, 0, 0)})}
+    )
+    {
+        const List<rodCrossingAudit::crossing> a =
+            rodCrossingAudit(near, lattice).check(start, end);
+        const List<rodCrossingAudit::crossing> b =
+            rodCrossingAudit(all, lattice).check(start, end);
+        EXPECT_GT(a.size(), 20);
+        ASSERT_EQ(a.size(), b.size());
+        forAll(a, i)
+        {
+            EXPECT_EQ(a[i].rodA, b[i].rodA) << "crossing " << i;
+            EXPECT_EQ(a[i].rodB, b[i].rodB) << "crossing " << i;
+            EXPECT_EQ(a[i].shift, b[i].shift) << "crossing " << i;
+            EXPECT_EQ(a[i].piece, b[i].piece) << "crossing " << i;
+            EXPECT_EQ(a[i].fraction, b[i].fraction) << "crossing " << i;
+        }
+    }
 }
 
 

@@ -21,6 +21,7 @@ License
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <utility>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -58,6 +59,25 @@ inline vec toVec(const Foam::point& p)
 inline vec at(const vec& a, const vec& b, const real t)
 {
     return {a.x + t*(b.x - a.x), a.y + t*(b.y - a.y), a.z + t*(b.z - a.z)};
+}
+
+
+// Crossings by their rods' beads, the translation, then the piece
+bool crossingOrder
+(
+    const Foam::polymer::rodCrossingAudit::crossing& a,
+    const Foam::polymer::rodCrossingAudit::crossing& b
+)
+{
+    const auto key = [](const Foam::polymer::rodCrossingAudit::crossing& c)
+    {
+        return std::make_tuple
+        (
+            c.rodA.first(), c.rodA.second(), c.rodB.first(), c.rodB.second(),
+            c.shift.x(), c.shift.y(), c.shift.z(), c.piece
+        );
+    };
+    return key(a) < key(b);
 }
 
 
@@ -452,6 +472,12 @@ Foam::polymer::rodCrossingAudit::check
             );
         }
     }
+
+    // The grid lists the pairs in the order of its cells, which changes
+    // with their size; the re-projection adds its contacts in the order
+    // of the crossings, so they are listed by their rods, translation and
+    // piece instead, an order of the rods alone
+    std::stable_sort(found.begin(), found.end(), crossingOrder);
     return List<crossing>(std::move(found));
 }
 
