@@ -54,6 +54,15 @@ polymerChains twoChains(const PtrList<chainType>& types)
 }
 
 
+// One open chain type of 5 beads
+PtrList<chainType> fiveBeadType()
+{
+    PtrList<chainType> types(1);
+    types.set(0, new chainType("five", 5, 1, 1, 1, 1, false));
+    return types;
+}
+
+
 // Chains of 5 beads at random in a 4 a cube, rods of length 1
 void appendRandomChains
 (
@@ -162,8 +171,7 @@ TEST(sweptBoxGrid, FindsExactlyTheOverlappingPairs)
     // grown by a random margin: the candidates are all non-adjacent pairs
     // whose boxes overlap, each once
     std::mt19937_64 gen(11);
-    PtrList<chainType> types(1);
-    types.set(0, new chainType("five", 5, 1, 1, 1, 1, false));
+    const PtrList<chainType> types(fiveBeadType());
     polymerChains chains(types);
     appendRandomChains(chains, 30, gen);
     chainRods rods;
@@ -253,8 +261,7 @@ TEST(sweptBoxGrid, ListsThePairsInAnOrderTheCellsDoNotChange)
     // must come in the same order, built and after growing boxes, plain
     // and across a periodic lattice
     std::mt19937_64 gen(23);
-    PtrList<chainType> types(1);
-    types.set(0, new chainType("five", 5, 1, 1, 1, 1, false));
+    const PtrList<chainType> types(fiveBeadType());
     polymerChains near(types);
     appendRandomChains(near, 60, gen);
     polymerChains withFar(near);
