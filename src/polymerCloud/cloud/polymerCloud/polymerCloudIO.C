@@ -13,8 +13,11 @@ Description
     lagrangian/<cloud>/positions (OpenFOAM's v1706 positions format, which
     ParaView's OpenFOAM reader shows as points), position (the same as a
     field), U, chainId, bead and chainType (index into chainTypes).
-    Positions and velocities are written with 17 significant digits so
-    that a restart continues bit for bit.
+    Every file follows the case's writeFormat and writeCompression
+    (positions in binary as OpenFOAM's particles write it: each point and
+    its cell as one raw block). Positions and velocities are written with
+    17 significant digits in ASCII so that a restart continues bit for
+    bit.
 
     In a parallel run each processor writes its own chains whole, beads
     in its neighbours' sub-domains included. reconstructPar joins the
@@ -35,7 +38,22 @@ Description
 #include "IFstream.H"
 #include "fileOperation.H"
 #include "OSspecific.H"
+#include "particle.H"
 #include "isFinite.H"
+
+#include <cstddef>
+
+// * * * * * * * * * * * * * * * Local Data  * * * * * * * * * * * * * * * //
+
+namespace
+{
+    // The bytes of a binary positions entry, as particle::writePosition
+    // writes them: the point and its cell
+    const std::streamsize binaryEntrySize =
+        offsetof(Foam::particle::positionsCompat1706, facei)
+      - offsetof(Foam::particle::positionsCompat1706, position);
+}
+
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -211,12 +229,25 @@ Foam::polymer::polymerCloud::readPositions(const IOobject& io)
     List<point> positions(n);
 
     is.readBegin("positions");
-    for (point& p : positions)
+    if (is.format() == IOstream::ASCII)
     {
-        label celli;
-        is >> p >> celli;
+        for (point& p : positions)
+        {
+            label celli;
+            is >> p >> celli;
+        }
+    }
+    else
+    {
+        particle::positionsCompat1706 entry;
+        for (point& p : positions)
+        {
+            is.read(reinterpret_cast<char*>(&entry.position), binaryEntrySize);
+            p = entry.position;
+        }
     }
     is.readEnd("positions");
+    is.check(FUNCTION_NAME);
 
     return positions;
 }
@@ -323,13 +354,21 @@ void Foam::polymer::polymerCloud::readChains(const fileName& dir)
 }
 
 
-void Foam::polymer::polymerCloud::writePositions() const
+void Foam::polymer::polymerCloud::writePositions
+(
+    IOstream::streamFormat fmt,
+    IOstream::versionNumber ver,
+    IOstream::compressionType cmp
+) const
 {
     const IOobject io(fieldIOobject("positions", IOobject::NO_READ));
     mkDir(io.path());
 
     // Through the file handler, as the cloud's fields are
-    autoPtr<Ostream> osPtr(fileHandler().NewOFstream(io.objectPath()));
+    autoPtr<Ostream> osPtr
+    (
+        fileHandler().NewOFstream(io.objectPath(), fmt, ver, cmp)
+    );
     Ostream& os = osPtr();
     io.writeHeader(os, "Cloud<passiveParticle>");
 
@@ -339,9 +378,29 @@ void Foam::polymer::polymerCloud::writePositions() const
     // per bead and write); readers locate the points themselves, and
     // chains need not be in the mesh
     os  << x.size() << nl << token::BEGIN_LIST << nl;
-    for (const point& p : x)
+    if (os.format() == IOstream::ASCII)
     {
-        os  << p << token::SPACE << label(-1) << nl;
+        for (const point& p : x)
+        {
+            os  << p << token::SPACE << label(-1) << nl;
+        }
+    }
+    else
+    {
+        // particle::writePosition's binary entry: the point and the cell
+        // as one raw block, which OpenFOAM's readers take
+        particle::positionsCompat1706 entry;
+        entry.celli = -1;
+        for (const point& p : x)
+        {
+            entry.position = p;
+            os.write
+            (
+                reinterpret_cast<const char*>(&entry.position),
+                binaryEntrySize
+            );
+            os  << nl;
+        }
     }
     os  << token::END_LIST << nl;
 
@@ -364,7 +423,7 @@ bool Foam::polymer::polymerCloud::writeObject
     const unsigned int oldPrecision =
         IOstream::defaultPrecision(max(17u, IOstream::defaultPrecision()));
 
-    writePositions();
+    writePositions(fmt, ver, cmp);
 
     const label n = chains_.nBeads();
     IOField<point> position
