@@ -356,7 +356,10 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
 
 void Foam::polymer::polymerCloud::updateDrift()
 {
+    // The copy of the step's starting state (checked finite) is the
+    // integration's: with no flow it is not the flow's cost
     stepper_->start();
+    pathTimes_.lap(pathTimes::integrate);
     stepper_->prepareDrift();
     pathTimes_.lap(pathTimes::interpolate);
     stepper_->updateDrift();
