@@ -239,6 +239,23 @@ Foam::polymer::polymerCloud::readPositions(const IOobject& io)
     }
     else
     {
+        // Raw blocks of this build's point and label: a file written with
+        // other sizes (its header's arch) cannot be read so
+        if
+        (
+            is.labelByteSize() != sizeof(label)
+         || is.scalarByteSize() != sizeof(scalar)
+        )
+        {
+            FatalIOErrorInFunction(is)
+                << "The binary positions file " << io.objectPath()
+                << " has " << is.labelByteSize() << "-byte labels and "
+                << is.scalarByteSize() << "-byte scalars (its header's arch)"
+                << nl << "    expected: " << sizeof(label) << "-byte labels"
+                << " and " << sizeof(scalar) << "-byte scalars, as this"
+                << " build writes them (or an ASCII file)"
+                << exit(FatalIOError);
+        }
         particle::positionsCompat1706 entry;
         for (point& p : positions)
         {
