@@ -30,7 +30,10 @@ void Foam::polymer::collisionModel::writeReport(Ostream& os) const
         << ", crossing-time solves " << total.pairChecks
         << ", rod-edge contacts " << total.edgeContacts
         << ", unresolved events " << total.unresolved
-        << ", audited crossings " << total.auditCrossings << nl;
+        << ", audited crossings " << total.auditCrossings
+        << ", colliding pairs " << total.collidingPairs
+        << " (summed step by step: a pair's collisions in one step"
+        << " counted once)" << nl;
 }
 
 

@@ -408,6 +408,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
     ++counters_.steps;
     counters_.events += nEvents;
     counters_.maxEventsPerStep = max(counters_.maxEventsPerStep, nEvents);
+    counters_.collidingPairs += contacts_.nResolved();
 }
 
 
