@@ -24,16 +24,16 @@ void Foam::polymer::collisionModel::writeReport(Ostream& os) const
 {
     const collisionCounters total = totalCounters_.reduced();
 
+    // The line ends with the audited crossings: scripts anchor on it
     os  << "    rod-rod collisions " << total.events
         << " (max per step " << total.maxEventsPerStep
-        << "), event-loop stalls " << total.stalls
+        << "; colliding pairs " << total.collidingPairs
+        << ", a pair counted once a step), event-loop stalls "
+        << total.stalls
         << ", crossing-time solves " << total.pairChecks
         << ", rod-edge contacts " << total.edgeContacts
         << ", unresolved events " << total.unresolved
-        << ", audited crossings " << total.auditCrossings
-        << ", colliding pairs " << total.collidingPairs
-        << " (summed step by step: a pair's collisions in one step"
-        << " counted once)" << nl;
+        << ", audited crossings " << total.auditCrossings << nl;
 }
 
 
