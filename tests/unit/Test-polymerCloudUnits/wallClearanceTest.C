@@ -21,6 +21,11 @@ Description
     - of 20000 random paths from those points, none shorter than its
       start's clearance enters a face, and the wall model's impacts are
       the face search's, path for path;
+    - the nearest face (boundaryFaces::nearest, which passes over the
+      faces whose bounds lie farther than the nearest found so far) is at
+      the least of the faces' own nearest distances, to the bit, at 20000
+      random points of the fluid, half of them within a tenth of a wall,
+      within the voxels' search radius and without a limit;
     - the faces' bounds (boundaryFaces::clearance) are never farther than
       the nearest face, nor than the reach asked; no path shorter than the
       wall model's clearance enters a face, and where the voxels give
@@ -93,6 +98,55 @@ TEST(wallClearance, WithinAVoxelOfTheNearestFace)
         positive += clearance(p) > 0;
     }
     EXPECT_GT(positive, 5000);
+}
+
+
+TEST(wallClearance, NearestFaceIsTheLeastOfTheFaces)
+{
+    const fvMesh* mesh = meshOf("wallL");
+    ASSERT_TRUE(mesh);
+    const boundaryFaces faces(*mesh, 0);
+    const wallClearance clearance(faces);
+    const scalar searched = 4*std::sqrt(3.0)*clearance.voxelSize();
+
+    // Every face's own nearest point (OpenFOAM's fan of triangles about
+    // the centre): the least distance, and a found point that is the
+    // found face's own nearest point
+    std::mt19937_64 engine(17);
+    std::uniform_real_distribution<scalar> u(0, 1);
+    label withinRadius = 0;
+    for (label i = 0; i < 20000; ++i)
+    {
+        point p(fluidPoint(engine));
+        if (i % 2)
+        {
+            // Within a tenth of the floor, where a wall is near
+            p.z() = 0.1*u(engine);
+        }
+        const faceList& all = faces.faces();
+        scalar least = GREAT;
+        for (const face& f : all)
+        {
+            least = min(least, f.nearestPoint(p, faces.points()).distance());
+        }
+        for (const scalar maxDistSqr : {GREAT, sqr(searched)})
+        {
+            const pointIndexHit nearest = faces.nearest(p, maxDistSqr);
+            ASSERT_EQ(nearest.hit(), sqr(least) < maxDistSqr)
+                << "at " << str(p);
+            if (!nearest.hit())
+            {
+                continue;
+            }
+            withinRadius += (maxDistSqr < GREAT);
+            const pointHit own =
+                all[nearest.index()].nearestPoint(p, faces.points());
+            ASSERT_EQ(own.distance(), least) << "at " << str(p);
+            ASSERT_EQ(mag(nearest.hitPoint() - own.rawPoint()), 0)
+                << "at " << str(p);
+        }
+    }
+    EXPECT_GT(withinRadius, 10000);
 }
 
 

@@ -59,6 +59,94 @@ public:
 };
 
 
+// The nearest face to a sample, passing over the faces whose bounds (the
+// plane less the warp, the centre less the radius) lie farther than the
+// nearest found so far: the exact nearest point of a face (a fan of
+// triangles about its centre) is what a search near the walls spends its
+// time on, and most faces within the search's reach are farther than the
+// nearest. A face is passed over only where its bound exceeds the nearest
+// distance by more than round-off, so the same face is found
+class boundedNearestOp
+{
+    const Foam::indexedOctree<treeFaces>& tree_;
+    const Foam::pointField& centres_;
+    const Foam::vectorField& normals_;
+    const Foam::scalarField& warps_;
+    const Foam::scalarField& radii_;
+
+public:
+
+    boundedNearestOp
+    (
+        const Foam::indexedOctree<treeFaces>& tree,
+        const Foam::pointField& centres,
+        const Foam::vectorField& normals,
+        const Foam::scalarField& warps,
+        const Foam::scalarField& radii
+    )
+    :
+        tree_(tree),
+        centres_(centres),
+        normals_(normals),
+        warps_(warps),
+        radii_(radii)
+    {}
+
+    void operator()
+    (
+        const Foam::labelUList& indices,
+        const Foam::point& sample,
+        Foam::scalar& nearestDistSqr,
+        Foam::label& minIndex,
+        Foam::point& nearestPoint
+    ) const
+    {
+        const Foam::primitiveFacePatch& patch = tree_.shapes().patch();
+        const Foam::pointField& points = patch.points();
+        for (const Foam::label index : indices)
+        {
+            const Foam::vector d(sample - centres_[index]);
+            const Foam::scalar bound = Foam::max
+            (
+                Foam::mag(normals_[index] & d) - warps_[index],
+                Foam::mag(d) - radii_[index]
+            );
+            if (bound > 0 && Foam::sqr(bound) > nearestDistSqr*(1 + 1e-9))
+            {
+                continue;
+            }
+
+            const Foam::pointHit hit
+            (
+                patch[index].nearestPoint(sample, points)
+            );
+            const Foam::scalar distSqr = Foam::sqr(hit.distance());
+            if (distSqr < nearestDistSqr)
+            {
+                nearestDistSqr = distSqr;
+                minIndex = index;
+                nearestPoint = hit.rawPoint();
+            }
+        }
+    }
+
+    // The nearest face to a line is not sought
+    void operator()
+    (
+        const Foam::labelUList&,
+        const Foam::linePointRef&,
+        Foam::treeBoundBox&,
+        Foam::label&,
+        Foam::point&,
+        Foam::point&
+    ) const
+    {
+        FatalErrorInFunction
+            << "Not implemented" << Foam::abort(Foam::FatalError);
+    }
+};
+
+
 // Append a face, with points of its own, to lists
 void appendFace
 (
@@ -393,7 +481,12 @@ Foam::pointIndexHit Foam::polymer::boundaryFaces::nearest
     {
         return pointIndexHit();
     }
-    return tree_->findNearest(p, maxDistSqr);
+    return tree_->findNearest
+    (
+        p,
+        maxDistSqr,
+        boundedNearestOp(tree_(), centres_, normals_, warps_, radii_)
+    );
 }
 
 
