@@ -26,6 +26,11 @@ Description
       the least of the faces' own nearest distances, to the bit, at 20000
       random points of the fluid, half of them within a tenth of a wall,
       within the voxels' search radius and without a limit;
+    - the first face a segment enters (boundaryFaces::firstEntered, which
+      passes over faces whose plane band the segment's end does not
+      reach) is the first of every face's own intersections along it, at
+      20000 random segments, half of them from within a tenth of the
+      floor and half of those crossing it;
     - the faces' bounds (boundaryFaces::clearance) are never farther than
       the nearest face, nor than the reach asked; no path shorter than the
       wall model's clearance enters a face, and where the voxels give
@@ -147,6 +152,68 @@ TEST(wallClearance, NearestFaceIsTheLeastOfTheFaces)
         }
     }
     EXPECT_GT(withinRadius, 10000);
+}
+
+
+TEST(wallClearance, FirstEnteredFaceIsTheFirstOfTheFaces)
+{
+    const fvMesh* mesh = meshOf("wallL");
+    ASSERT_TRUE(mesh);
+    const boundaryFaces faces(*mesh, 0);
+    const faceList& all = faces.faces();
+    const pointField centres
+    (
+        primitiveFacePatch(all, faces.points()).faceCentres()
+    );
+
+    // Every face's own intersection (OpenFOAM's, as the octree's shapes
+    // take it) for the faces the segment enters along their area vector
+    std::mt19937_64 engine(19);
+    std::normal_distribution<scalar> normal(0, 1);
+    std::uniform_real_distribution<scalar> u(0, 1);
+    label entered = 0;
+    for (label i = 0; i < 20000; ++i)
+    {
+        point p(fluidPoint(engine));
+        vector path(normal(engine), normal(engine), normal(engine));
+        path *= 0.5*u(engine)/mag(path);
+        if (i % 2)
+        {
+            // From within a tenth of the floor, every other one through it
+            p.z() = 0.1*u(engine);
+            path.z() = (i % 4 == 1) ? -0.2*u(engine) - p.z() : 0.05*u(engine);
+        }
+        scalar first = GREAT;
+        point firstPoint(Zero);
+        label firstFace = -1;
+        forAll(all, facei)
+        {
+            if ((path & faces.area(facei)) > 0)
+            {
+                const pointHit hit = all[facei].intersection
+                (
+                    p, path, centres[facei], faces.points(),
+                    intersection::HALF_RAY, 0
+                );
+                if (hit.hit() && hit.distance() <= 1 && hit.distance() < first)
+                {
+                    first = hit.distance();
+                    firstPoint = hit.hitPoint();
+                    firstFace = facei;
+                }
+            }
+        }
+        // The same point, but for the round-off of two faces' shared edge
+        const pointIndexHit h = faces.firstEntered(p, p + path);
+        ASSERT_EQ(h.hit(), firstFace >= 0) << "from " << str(p);
+        if (h.hit())
+        {
+            ++entered;
+            ASSERT_LE(mag(h.hitPoint() - firstPoint), 1e-12)
+                << "from " << str(p);
+        }
+    }
+    EXPECT_GT(entered, 4000);
 }
 
 

@@ -26,22 +26,36 @@ namespace
 typedef Foam::treeDataPrimitivePatch<Foam::primitiveFacePatch> treeFaces;
 
 // The intersection of a segment with a face it enters along the face's
-// outward area vector (from the fluid side); faces it leaves are passed
+// outward area vector (from the fluid side); faces it leaves are passed,
+// and so are faces whose plane band (the plane less the warp) the
+// segment's end does not reach: a segment that enters along the area
+// vector and ends on the fluid side of the band lies there whole, and
+// the exact intersection (a fan of triangles about the face's centre)
+// would find nothing
 class enteringFaceOp
 {
     const Foam::indexedOctree<treeFaces>& tree_;
     const Foam::vectorField& areas_;
+    const Foam::pointField& centres_;
+    const Foam::vectorField& normals_;
+    const Foam::scalarField& warps_;
 
 public:
 
     enteringFaceOp
     (
         const Foam::indexedOctree<treeFaces>& tree,
-        const Foam::vectorField& areas
+        const Foam::vectorField& areas,
+        const Foam::pointField& centres,
+        const Foam::vectorField& normals,
+        const Foam::scalarField& warps
     )
     :
         tree_(tree),
-        areas_(areas)
+        areas_(areas),
+        centres_(centres),
+        normals_(normals),
+        warps_(warps)
     {}
 
     bool operator()
@@ -52,9 +66,20 @@ public:
         Foam::point& hitPoint
     ) const
     {
-        return
-            ((end - start) & areas_[index]) > 0
-         && treeFaces::findIntersection(tree_, index, start, end, hitPoint);
+        if (!(((end - start) & areas_[index]) > 0))
+        {
+            return false;
+        }
+
+        // Short of the band by more than round-off
+        const Foam::vector toEnd(end - centres_[index]);
+        const Foam::scalar margin =
+            1e-9*(Foam::mag(toEnd) + Foam::mag(end - start));
+        if ((normals_[index] & toEnd) < -(warps_[index] + margin))
+        {
+            return false;
+        }
+        return treeFaces::findIntersection(tree_, index, start, end, hitPoint);
     }
 };
 
@@ -412,7 +437,12 @@ Foam::pointIndexHit Foam::polymer::boundaryFaces::firstEntered
     {
         return pointIndexHit();
     }
-    return tree_->findLine(start, end, enteringFaceOp(tree_(), areas_));
+    return tree_->findLine
+    (
+        start,
+        end,
+        enteringFaceOp(tree_(), areas_, centres_, normals_, warps_)
+    );
 }
 
 
