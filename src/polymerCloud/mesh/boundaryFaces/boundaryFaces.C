@@ -25,6 +25,55 @@ namespace
 
 typedef Foam::treeDataPrimitivePatch<Foam::primitiveFacePatch> treeFaces;
 
+// Where the faces lie (boundaryFaces' centres, normals, warps and radii):
+// every point of a face, a fan of triangles about its centre, is within
+// its warp of its plane and within its radius of its centre
+struct faceBounds
+{
+    const Foam::pointField& centres;
+    const Foam::vectorField& normals;
+    const Foam::scalarField& warps;
+    const Foam::scalarField& radii;
+
+    // The distance of p from face i's plane, out of the domain
+    Foam::scalar planeDistance(const Foam::label i, const Foam::point& p)
+    const
+    {
+        return normals[i] & (p - centres[i]);
+    }
+
+    // A distance from the segment p0-p1 within which face i does not lie
+    // (p0 = p1 for a point): its plane less its warp, where the segment
+    // stays on one side (a linear function: least at an end), and its
+    // centre's distance from the segment's nearest point less its radius
+    Foam::scalar segmentBound
+    (
+        const Foam::label i,
+        const Foam::point& p0,
+        const Foam::point& p1
+    ) const
+    {
+        const Foam::scalar h0 = planeDistance(i, p0);
+        const Foam::scalar h1 = planeDistance(i, p1);
+        const Foam::scalar plane =
+            ((h0 > 0) == (h1 > 0) && h0 != 0 && h1 != 0)
+          ? Foam::min(Foam::mag(h0), Foam::mag(h1)) - warps[i]
+          : -warps[i];
+
+        const Foam::vector segment(p1 - p0);
+        const Foam::scalar lengthSqr = Foam::magSqr(segment);
+        const Foam::vector d0(p0 - centres[i]);
+        const Foam::scalar along =
+            lengthSqr > 0
+          ? Foam::min(Foam::max(-(d0 & segment)/lengthSqr, 0), 1)
+          : 0;
+        const Foam::scalar centre = Foam::mag(d0 + along*segment) - radii[i];
+
+        return Foam::max(plane, centre);
+    }
+};
+
+
 // The intersection of a segment with a face it enters along the face's
 // outward area vector (from the fluid side); faces it leaves are passed,
 // and so are faces whose plane band (the plane less the warp) the
@@ -36,9 +85,7 @@ class enteringFaceOp
 {
     const Foam::indexedOctree<treeFaces>& tree_;
     const Foam::vectorField& areas_;
-    const Foam::pointField& centres_;
-    const Foam::vectorField& normals_;
-    const Foam::scalarField& warps_;
+    const faceBounds bounds_;
 
 public:
 
@@ -46,16 +93,12 @@ public:
     (
         const Foam::indexedOctree<treeFaces>& tree,
         const Foam::vectorField& areas,
-        const Foam::pointField& centres,
-        const Foam::vectorField& normals,
-        const Foam::scalarField& warps
+        const faceBounds& bounds
     )
     :
         tree_(tree),
         areas_(areas),
-        centres_(centres),
-        normals_(normals),
-        warps_(warps)
+        bounds_(bounds)
     {}
 
     bool operator()
@@ -72,10 +115,14 @@ public:
         }
 
         // Short of the band by more than round-off
-        const Foam::vector toEnd(end - centres_[index]);
         const Foam::scalar margin =
-            1e-9*(Foam::mag(toEnd) + Foam::mag(end - start));
-        if ((normals_[index] & toEnd) < -(warps_[index] + margin))
+            1e-9
+           *(Foam::mag(end - bounds_.centres[index]) + Foam::mag(end - start));
+        if
+        (
+            bounds_.planeDistance(index, end)
+          < -(bounds_.warps[index] + margin)
+        )
         {
             return false;
         }
@@ -84,37 +131,28 @@ public:
 };
 
 
-// The nearest face to a sample, passing over the faces whose bounds (the
-// plane less the warp, the centre less the radius) lie farther than the
-// nearest found so far: the exact nearest point of a face (a fan of
-// triangles about its centre) is what a search near the walls spends its
-// time on, and most faces within the search's reach are farther than the
-// nearest. A face is passed over only where its bound exceeds the nearest
-// distance by more than round-off, so the same face is found
+// The nearest face to a sample, passing over the faces whose bounds lie
+// farther than the nearest found so far: the exact nearest point of a
+// face (a fan of triangles about its centre) is what a search near the
+// walls spends its time on, and most faces within the search's reach are
+// farther than the nearest. A face is passed over only where its bound
+// exceeds the nearest distance by more than round-off, so the same face
+// is found
 class boundedNearestOp
 {
-    const Foam::indexedOctree<treeFaces>& tree_;
-    const Foam::pointField& centres_;
-    const Foam::vectorField& normals_;
-    const Foam::scalarField& warps_;
-    const Foam::scalarField& radii_;
+    const Foam::primitiveFacePatch& patch_;
+    const faceBounds bounds_;
 
 public:
 
     boundedNearestOp
     (
-        const Foam::indexedOctree<treeFaces>& tree,
-        const Foam::pointField& centres,
-        const Foam::vectorField& normals,
-        const Foam::scalarField& warps,
-        const Foam::scalarField& radii
+        const Foam::primitiveFacePatch& patch,
+        const faceBounds& bounds
     )
     :
-        tree_(tree),
-        centres_(centres),
-        normals_(normals),
-        warps_(warps),
-        radii_(radii)
+        patch_(patch),
+        bounds_(bounds)
     {}
 
     void operator()
@@ -126,16 +164,10 @@ public:
         Foam::point& nearestPoint
     ) const
     {
-        const Foam::primitiveFacePatch& patch = tree_.shapes().patch();
-        const Foam::pointField& points = patch.points();
         for (const Foam::label index : indices)
         {
-            const Foam::vector d(sample - centres_[index]);
-            const Foam::scalar bound = Foam::max
-            (
-                Foam::mag(normals_[index] & d) - warps_[index],
-                Foam::mag(d) - radii_[index]
-            );
+            const Foam::scalar bound =
+                bounds_.segmentBound(index, sample, sample);
             if (bound > 0 && Foam::sqr(bound) > nearestDistSqr*(1 + 1e-9))
             {
                 continue;
@@ -143,7 +175,7 @@ public:
 
             const Foam::pointHit hit
             (
-                patch[index].nearestPoint(sample, points)
+                patch_[index].nearestPoint(sample, patch_.points())
             );
             const Foam::scalar distSqr = Foam::sqr(hit.distance());
             if (distSqr < nearestDistSqr)
@@ -441,7 +473,10 @@ Foam::pointIndexHit Foam::polymer::boundaryFaces::firstEntered
     (
         start,
         end,
-        enteringFaceOp(tree_(), areas_, centres_, normals_, warps_)
+        enteringFaceOp
+        (
+            tree_(), areas_, faceBounds{centres_, normals_, warps_, radii_}
+        )
     );
 }
 
@@ -471,8 +506,7 @@ Foam::scalar Foam::polymer::boundaryFaces::pathClearance
         return max(reach, 0);
     }
     const vector half(vector::uniform(reach));
-    const vector segment(p1 - p0);
-    const scalar lengthSqr = magSqr(segment);
+    const faceBounds bounds{centres_, normals_, warps_, radii_};
     scalar lowest = reach;
     for
     (
@@ -480,22 +514,7 @@ Foam::scalar Foam::polymer::boundaryFaces::pathClearance
       : tree_->findBox(treeBoundBox(min(p0, p1) - half, max(p0, p1) + half))
     )
     {
-        // The plane: the segment's distance from it, where it stays on
-        // one side (a linear function: least at an end)
-        const vector d0(p0 - centres_[facei]);
-        const scalar h0 = normals_[facei] & d0;
-        const scalar h1 = normals_[facei] & (p1 - centres_[facei]);
-        const scalar plane =
-            ((h0 > 0) == (h1 > 0) && h0 != 0 && h1 != 0)
-          ? min(mag(h0), mag(h1)) - warps_[facei]
-          : -warps_[facei];
-
-        // The centre: its distance from the segment's nearest point
-        const scalar along =
-            lengthSqr > 0 ? min(max(-(d0 & segment)/lengthSqr, 0), 1) : 0;
-        const scalar centre = mag(d0 + along*segment) - radii_[facei];
-
-        lowest = min(lowest, max(plane, centre));
+        lowest = min(lowest, bounds.segmentBound(facei, p0, p1));
     }
     return max(lowest, 0);
 }
@@ -515,7 +534,10 @@ Foam::pointIndexHit Foam::polymer::boundaryFaces::nearest
     (
         p,
         maxDistSqr,
-        boundedNearestOp(tree_(), centres_, normals_, warps_, radii_)
+        boundedNearestOp
+        (
+            facePatch_(), faceBounds{centres_, normals_, warps_, radii_}
+        )
     );
 }
 
