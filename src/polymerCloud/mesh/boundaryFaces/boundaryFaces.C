@@ -114,17 +114,22 @@ public:
             return false;
         }
 
-        // Short of the band by more than round-off
-        const Foam::scalar margin =
-            1e-9
-           *(Foam::mag(end - bounds_.centres[index]) + Foam::mag(end - start));
-        if
-        (
-            bounds_.planeDistance(index, end)
-          < -(bounds_.warps[index] + margin)
-        )
+        // Short of the band by more than round-off (the margin's square
+        // roots only for an end beyond the band)
+        const Foam::scalar h = bounds_.planeDistance(index, end);
+        const Foam::scalar warp = bounds_.warps[index];
+        if (h < -warp)
         {
-            return false;
+            const Foam::scalar margin =
+                1e-9
+               *(
+                    Foam::mag(end - bounds_.centres[index])
+                  + Foam::mag(end - start)
+                );
+            if (h < -(warp + margin))
+            {
+                return false;
+            }
         }
         return treeFaces::findIntersection(tree_, index, start, end, hitPoint);
     }
