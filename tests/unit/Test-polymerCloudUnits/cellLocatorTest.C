@@ -22,7 +22,8 @@ Description
       tets' edge matrices have condition numbers of order 10);
     - the same tet and coordinates, to the bit, from the search that
       starts at the tet and tests it by its kept transform (tetTransform)
-      as from the search that tests it on the mesh;
+      as from the search that tests it on the mesh, and with them the
+      found tet's own transform and face triangle, to the bit;
     - in units of the cell, the coordinates of OpenFOAM's
       tetrahedron::pointToBarycentric, to the bit.
     And the bead sampler (beadSampler), which keeps each bead's tet and
@@ -80,6 +81,7 @@ void checkSearches(const word& caseName, const scalar h)
     std::mt19937_64 engine(20261128);
     std::uniform_real_distribution<scalar> u(0, 1);
     label nChecked = 0;
+    label nSearched = 0;
     for (label n = 0; n < 20000; ++n)
     {
         const point start(h*(0.5 + 9*u(engine)), h*(0.5 + 9*u(engine)),
@@ -123,19 +125,37 @@ void checkSearches(const word& caseName, const scalar h)
 
         // From the tet's kept transform: the same tet and coordinates
         polymer::tetTransform transform(locator.transform(from));
-        barycentric kept;
+        polymer::cellLocator::tetPlace kept;
         tetIndices again(from);
-        if (!polymer::cellLocator::stillIn(p, transform, kept))
+        if (!polymer::cellLocator::stillIn(p, transform, kept.coordinates))
         {
             again = locator.search(p, from, kept);
+
+            // The search's transform and triangle are the found tet's,
+            // to the bit: they place any point as the tet's own do
+            EXPECT_EQ(kept.triangle, again.faceTriIs(*mesh))
+                << caseName << " point " << str(p);
+            const polymer::tetTransform own(locator.transform(again));
+            for (const point& q : {p, start, mesh->C()[again.cell()]})
+            {
+                const barycentric a(kept.transform.coordinates(q));
+                const barycentric b(own.coordinates(q));
+                for (direction k = 0; k < 4; ++k)
+                {
+                    EXPECT_EQ(a[k], b[k]) << caseName << " point " << str(q);
+                }
+            }
+            ++nSearched;
         }
         EXPECT_EQ(again, tet) << caseName << " point " << str(p);
         for (direction k = 0; k < 4; ++k)
         {
-            EXPECT_EQ(kept[k], c[k]) << caseName << " point " << str(p);
+            EXPECT_EQ(kept.coordinates[k], c[k])
+                << caseName << " point " << str(p);
         }
     }
     EXPECT_GT(nChecked, 19900);
+    EXPECT_GT(nSearched, 10000);
 }
 
 } // End anonymous namespace

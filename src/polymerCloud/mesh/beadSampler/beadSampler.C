@@ -203,15 +203,18 @@ void Foam::polymer::beadSampler::prefetchPointValues
 }
 
 
-void Foam::polymer::beadSampler::keepTet
+void Foam::polymer::beadSampler::keepPlace
 (
-    const tetIndices& tet,
+    const cellLocator::tetPlace& place,
+    const label i,
     tetTransform& transform,
     triFace& triangle
-) const
+)
 {
-    triangle = tet.faceTriIs(mesh_);
-    transform = locator_.transform(tet.cell(), triangle);
+    // As the search's tet test computed them: no mesh data read again
+    hostCoordinates_[i] = place.coordinates;
+    transform = place.transform;
+    triangle = place.triangle;
 }
 
 
@@ -243,13 +246,14 @@ void Foam::polymer::beadSampler::locateUntracked
         (
             i > chains.start(chaini) ? hostTet[i - 1] : tetIndices()
         );
+        cellLocator::tetPlace place;
         hostTet[i] =
             bounds.contains(p)
-          ? locator_.findTet(p, start, hostCoordinates_[i])
+          ? locator_.findTet(p, start, place)
           : tetIndices();
         if (hostTet[i].cell() >= 0)
         {
-            keepTet(hostTet[i], transform[i], triangle[i]);
+            keepPlace(place, i, transform[i], triangle[i]);
         }
     }
 }
@@ -319,16 +323,11 @@ void Foam::polymer::beadSampler::searchLeavers
         }
         const label j = leaverOrder_[k];
         const label i = leaverBeads_[j];
-        hostTet[i] =
-            locator_.search
-            (
-                leaverPoints_[j],
-                leaverTets_[j],
-                hostCoordinates_[i]
-            );
+        cellLocator::tetPlace place;
+        hostTet[i] = locator_.search(leaverPoints_[j], leaverTets_[j], place);
         if (hostTet[i].cell() >= 0)
         {
-            keepTet(hostTet[i], transform[i], triangle[i]);
+            keepPlace(place, i, transform[i], triangle[i]);
         }
     }
 }

@@ -70,7 +70,7 @@ bool Foam::polymer::cellLocator::inTet
     const polyMesh& mesh,
     const point& p,
     const tetIndices& tet,
-    barycentric& coordinates
+    tetPlace& place
 )
 {
     // cellPointWeight's acceptance: degenerate tets skipped, coordinates
@@ -79,16 +79,26 @@ bool Foam::polymer::cellLocator::inTet
     // to its cell's alone: tetrahedron::pointToBarycentric also gives
     // coordinates of 1/4 for a tet whose edge determinant is below SMALL
     // in absolute terms, which is every tet of a mesh in metres with
-    // cells of a micrometre. Its arithmetic otherwise (tetTransform)
-    const tetPointRef points(tet.tet(mesh));
+    // cells of a micrometre. Its arithmetic otherwise (tetTransform). The
+    // tet's points as tetIndices::tet takes them
+    place.triangle = tet.faceTriIs(mesh);
+    const pointField& meshPoints = mesh.points();
+    const tetPointRef points
+    (
+        mesh.cellCentres()[tet.cell()],
+        meshPoints[place.triangle[0]],
+        meshPoints[place.triangle[1]],
+        meshPoints[place.triangle[2]]
+    );
     const tensor edges(tetTransform::edgeMatrix(points));
     const scalar detT = det(edges);
     if (!(mag(detT/mesh.cellVolumes()[tet.cell()]) > SMALL))
     {
         return false;
     }
-    coordinates = tetTransform(points, edges, detT).coordinates(p);
-    return holds(coordinates);
+    place.transform = tetTransform(points, edges, detT);
+    place.coordinates = place.transform.coordinates(p);
+    return holds(place.coordinates);
 }
 
 
@@ -122,14 +132,14 @@ bool Foam::polymer::cellLocator::inTets
     const point& p,
     const label celli,
     tetIndices& tet,
-    barycentric& coordinates
+    tetPlace& place
 )
 {
     // A tet of this cell given in tet first: a bead a step later is most
     // often still in the tet that held it (a hint only: it may be stale)
     const tetIndices first(tet);
     const bool hasFirst = isTetOf(mesh, first, celli);
-    if (hasFirst && inTet(mesh, p, first, coordinates))
+    if (hasFirst && inTet(mesh, p, first, place))
     {
         return true;
     }
@@ -145,7 +155,7 @@ bool Foam::polymer::cellLocator::inTets
                 continue;
             }
             tet = tetIndices(celli, facei, tetPti);
-            if (inTet(mesh, p, tet, coordinates))
+            if (inTet(mesh, p, tet, place))
             {
                 return true;
             }
@@ -160,12 +170,12 @@ bool Foam::polymer::cellLocator::inCell
     const point& p,
     const label celli,
     tetIndices& tet,
-    barycentric& coordinates
+    tetPlace& place
 ) const
 {
     return
         boxes_[celli].contains(p)
-     && inTets(mesh(), p, celli, tet, coordinates);
+     && inTets(mesh(), p, celli, tet, place);
 }
 
 
@@ -175,14 +185,14 @@ bool Foam::polymer::cellLocator::inFan
     const label celli,
     const label facei,
     tetIndices& tet,
-    barycentric& coordinates
+    tetPlace& place
 ) const
 {
     const label nTets = mesh().faces()[facei].size() - 2;
     for (label tetPti = 1; tetPti <= nTets; ++tetPti)
     {
         const tetIndices candidate(celli, facei, tetPti);
-        if (inTet(mesh(), p, candidate, coordinates))
+        if (inTet(mesh(), p, candidate, place))
         {
             tet = candidate;
             return true;
@@ -197,7 +207,7 @@ Foam::label Foam::polymer::cellLocator::rayWalk
     const point& p,
     label celli,
     tetIndices& tet,
-    barycentric& coordinates
+    tetPlace& place
 ) const
 {
     // Along the ray from each cell's centre to p: p is in the tets on the
@@ -217,7 +227,7 @@ Foam::label Foam::polymer::cellLocator::rayWalk
         }
         if (inside)
         {
-            return inFan(p, celli, facei, tet, coordinates) ? celli : -1;
+            return inFan(p, celli, facei, tet, place) ? celli : -1;
         }
         if (across < 0)
         {
@@ -247,10 +257,10 @@ Foam::label Foam::polymer::cellLocator::walk
     const point& p,
     label celli,
     tetIndices& tet,
-    barycentric& coordinates
+    tetPlace& place
 ) const
 {
-    if (inCell(p, celli, tet, coordinates))
+    if (inCell(p, celli, tet, place))
     {
         return celli;
     }
@@ -272,7 +282,7 @@ Foam::label Foam::polymer::cellLocator::walk
             }
             const label other =
                 (owner[facei] == celli) ? neighbour[facei] : owner[facei];
-            if (inCell(p, other, tet, coordinates))
+            if (inCell(p, other, tet, place))
             {
                 return other;
             }
@@ -334,8 +344,8 @@ Foam::label Foam::polymer::cellLocator::findCell
     const label previousCell
 ) const
 {
-    barycentric coordinates;
-    return findTet(p, previousCell, coordinates).cell();
+    tetPlace place;
+    return findTet(p, tetIndices(previousCell, -1, -1), place).cell();
 }
 
 
@@ -354,7 +364,7 @@ Foam::tetIndices Foam::polymer::cellLocator::search
 (
     const point& p,
     const tetIndices& previous,
-    barycentric& coordinates
+    tetPlace& place
 ) const
 {
     tetIndices tet(previous);
@@ -362,7 +372,7 @@ Foam::tetIndices Foam::polymer::cellLocator::search
     {
         // Most of the beads that left their tet are found along the ray
         // from their cell's centre
-        if (rayWalk(p, previous.cell(), tet, coordinates) >= 0)
+        if (rayWalk(p, previous.cell(), tet, place) >= 0)
         {
             return tet;
         }
@@ -370,7 +380,7 @@ Foam::tetIndices Foam::polymer::cellLocator::search
         if
         (
             nearCell(p, previous.cell())
-         && walk(p, previous.cell(), tet, coordinates) >= 0
+         && walk(p, previous.cell(), tet, place) >= 0
         )
         {
             return tet;
@@ -380,7 +390,7 @@ Foam::tetIndices Foam::polymer::cellLocator::search
     // The tree gives the cell; its tet is searched again (rare: a first
     // search, or a walk that stopped short)
     const label celli = findCell(p);
-    if (celli < 0 || !inTets(mesh(), p, celli, tet, coordinates))
+    if (celli < 0 || !inTets(mesh(), p, celli, tet, place))
     {
         return tetIndices();
     }
@@ -395,17 +405,31 @@ Foam::tetIndices Foam::polymer::cellLocator::findTet
     barycentric& coordinates
 ) const
 {
+    tetPlace place;
+    const tetIndices tet(findTet(p, previous, place));
+    coordinates = place.coordinates;
+    return tet;
+}
+
+
+Foam::tetIndices Foam::polymer::cellLocator::findTet
+(
+    const point& p,
+    const tetIndices& previous,
+    tetPlace& place
+) const
+{
     // Most beads are still in the tet that held them
     if
     (
         previous.cell() >= 0
      && isTetOf(mesh(), previous, previous.cell())
-     && inTet(mesh(), p, previous, coordinates)
+     && inTet(mesh(), p, previous, place)
     )
     {
         return previous;
     }
-    return search(p, previous, coordinates);
+    return search(p, previous, place);
 }
 
 
