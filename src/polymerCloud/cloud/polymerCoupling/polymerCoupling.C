@@ -272,13 +272,10 @@ void Foam::polymer::polymerCoupling::deposit
             const label celli = sampler.hostTets()[i].cell();
             if (celli < 0)
             {
-                const label proci = sampler.remoteOwners()[i];
+                const label proci = sampler.remoteOwner(i);
                 if (proci >= 0)
                 {
-                    remoteCell[proci].append
-                    (
-                        sampler.remoteTets()[i].cell()
-                    );
+                    remoteCell[proci].append(sampler.remoteTet(i).cell());
                     remoteTransfer[proci].append(transfer);
                     remoteCoeff[proci].append(coeff);
                 }

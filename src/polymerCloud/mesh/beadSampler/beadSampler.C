@@ -519,8 +519,6 @@ void Foam::polymer::beadSampler::locate(const polymerChains& chains)
     List<tetIndices>& hostTet = hostTets_.update(chains);
     List<tetTransform>& hostTransform = hostTransforms_.update(chains);
     List<triFace>& hostTriangle = hostTriangles_.update(chains);
-    labelList& owner = remoteOwners_.update(chains);
-    List<tetIndices>& remoteTet = remoteTets_.update(chains);
 
     unheld_.clear();
     unheldPoints_.clear();
@@ -541,19 +539,31 @@ void Foam::polymer::beadSampler::locate(const polymerChains& chains)
             unheld_.append(i);
             unheldPoints_.append(periodic_.wrap(x[i]));
         }
-        else
+    }
+
+    // A serial run has no other mesh to ask: its unheld beads are outside
+    // (remoteOwner -1), and the other processors' tets are neither kept
+    // nor carried through the chains' reorders
+    if (!Pstream::parRun())
+    {
+        nOutside_ = unheld_.size();
+        return;
+    }
+
+    labelList& owner = remoteOwners_.update(chains);
+    List<tetIndices>& remoteTet = remoteTets_.update(chains);
+    forAll(hostTet, i)
+    {
+        if (hostTet[i].cell() >= 0)
         {
             owner[i] = -1;
             remoteTet[i] = tetIndices();
         }
     }
 
-    if (Pstream::parRun())
-    {
-        clockTime clock;
-        locateRemote(owner, remoteTet);
-        exchangeSeconds_ += clock.elapsedTime();
-    }
+    clockTime clock;
+    locateRemote(owner, remoteTet);
+    exchangeSeconds_ += clock.elapsedTime();
 
     nOutside_ = 0;
     for (const label i : unheld_)
