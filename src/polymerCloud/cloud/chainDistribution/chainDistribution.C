@@ -135,7 +135,7 @@ Foam::polymer::chainDistribution::chainDistribution
     chains_(chains),
     sorted_(sorted),
     neighbours_(mesh),
-    referenceTets_(tetIndices()),
+    referenceCells_(-1),
     nMoved_(0),
     nWrapped_(0),
     seconds_(0)
@@ -155,20 +155,16 @@ Foam::polymer::chainDistribution::locateReferenceBeads(const bool unknownOnly)
     const cellLocator& locator = cellLocator::New(mesh_);
     const boundBox& bounds = neighbours_.localBounds();
     const List<vector>& x = chains_.positions();
-    List<tetIndices>& tet = referenceTets_.update(chains_);
+    labelList& cell = referenceCells_.update(chains_);
     for (label c = 0; c < chains_.nChains(); ++c)
     {
         const label i = chains_.referenceBead(c);
-        if (unknownOnly && tet[i].cell() >= 0)
+        if (unknownOnly && cell[i] >= 0)
         {
             continue;
         }
         const point p = periodic_.wrap(x[i]);
-        barycentric coordinates;
-        tet[i] =
-            bounds.contains(p)
-          ? locator.findTet(p, tet[i], coordinates)
-          : tetIndices();
+        cell[i] = bounds.contains(p) ? locator.findCell(p, cell[i]) : -1;
     }
 }
 
@@ -188,13 +184,13 @@ void Foam::polymer::chainDistribution::distribute()
     // Chains whose reference bead this processor's mesh does not hold go
     // to the processor that holds it; one that no processor holds (outside
     // the mesh) stays where it is
-    const List<tetIndices>& tet = referenceTets_.values();
+    const labelList& cell = referenceCells_.values();
     DynamicList<label> leaving;
     DynamicList<point> leavingPoints;
     for (label c = 0; c < chains_.nChains(); ++c)
     {
         const label i = chains_.referenceBead(c);
-        if (tet[i].cell() < 0)
+        if (cell[i] < 0)
         {
             leaving.append(c);
             leavingPoints.append(periodic_.wrap(x[i]));
@@ -518,14 +514,14 @@ void Foam::polymer::chainDistribution::sort()
 
     // Chains that arrived from other processors are not located yet
     locateReferenceBeads(true);
-    const List<tetIndices>& tet = referenceTets_.values();
+    const labelList& cell = referenceCells_.values();
 
     // By cell (those outside this processor's mesh last), then by global
     // id, so that the order does not depend on the chains' history
     const label nCells = mesh_.nCells();
     auto key = [&](const label c)
     {
-        const label celli = tet[chains_.referenceBead(c)].cell();
+        const label celli = cell[chains_.referenceBead(c)];
         return std::make_pair
         (
             celli < 0 ? nCells : celli,
