@@ -65,6 +65,25 @@ Foam::polymer::cellLocator::cellLocator(const polyMesh& mesh)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::tetPointRef Foam::polymer::cellLocator::tetPoints
+(
+    const polyMesh& mesh,
+    const label celli,
+    const triFace& triangle
+)
+{
+    // As tetIndices::tet takes them
+    const pointField& meshPoints = mesh.points();
+    return tetPointRef
+    (
+        mesh.cellCentres()[celli],
+        meshPoints[triangle[0]],
+        meshPoints[triangle[1]],
+        meshPoints[triangle[2]]
+    );
+}
+
+
 bool Foam::polymer::cellLocator::inTet
 (
     const polyMesh& mesh,
@@ -79,17 +98,9 @@ bool Foam::polymer::cellLocator::inTet
     // to its cell's alone: tetrahedron::pointToBarycentric also gives
     // coordinates of 1/4 for a tet whose edge determinant is below SMALL
     // in absolute terms, which is every tet of a mesh in metres with
-    // cells of a micrometre. Its arithmetic otherwise (tetTransform). The
-    // tet's points as tetIndices::tet takes them
+    // cells of a micrometre. Its arithmetic otherwise (tetTransform)
     place.triangle = tet.faceTriIs(mesh);
-    const pointField& meshPoints = mesh.points();
-    const tetPointRef points
-    (
-        mesh.cellCentres()[tet.cell()],
-        meshPoints[place.triangle[0]],
-        meshPoints[place.triangle[1]],
-        meshPoints[place.triangle[2]]
-    );
+    const tetPointRef points(tetPoints(mesh, tet.cell(), place.triangle));
     const tensor edges(tetTransform::edgeMatrix(points));
     const scalar detT = det(edges);
     if (!(mag(detT/mesh.cellVolumes()[tet.cell()]) > SMALL))
@@ -448,15 +459,7 @@ Foam::polymer::tetTransform Foam::polymer::cellLocator::transform
     const triFace& triangle
 ) const
 {
-    // The tet's points as tetIndices::tet takes them
-    const pointField& meshPoints = mesh().points();
-    const tetPointRef points
-    (
-        mesh().cellCentres()[celli],
-        meshPoints[triangle[0]],
-        meshPoints[triangle[1]],
-        meshPoints[triangle[2]]
-    );
+    const tetPointRef points(tetPoints(mesh(), celli, triangle));
     const tensor edges(tetTransform::edgeMatrix(points));
     return tetTransform(points, edges, det(edges));
 }
