@@ -296,6 +296,31 @@ void kick
     *largestVelocity = notNumber ? lane{} + NAN : largest;
 }
 
+// converged = positions in the lanes of keep (all bits set), unchanged in
+// the others; n lanes each. On the bits, so that the baseline version too
+// is whole-register logic (a lane-wise ?: there became a branch per
+// element, whose stores and wide reloads stalled).
+LANE_TARGETS
+void keepConverged
+(
+    const label n,
+    const laneMask* keep,
+    const lane* positions,
+    lane* converged
+)
+{
+    const laneMask taken = *keep;
+    for (label i = 0; i < n; ++i)
+    {
+        converged[i] = __builtin_bit_cast
+        (
+            lane,
+            (__builtin_bit_cast(laneMask, positions[i]) & taken)
+          | (__builtin_bit_cast(laneMask, converged[i]) & ~taken)
+        );
+    }
+}
+
 } // End namespace newtonLaneKernels
 } // End namespace polymer
 } // End namespace Foam
@@ -512,11 +537,10 @@ void Foam::polymer::newtonLanes::solve
         }
         if (anyConverged)
         {
-            for (label i = 0; i < 3*nBeads_; ++i)
-            {
-                converged_[i].value =
-                    converging ? positions_[i].value : converged_[i].value;
-            }
+            newtonLaneKernels::keepConverged
+            (
+                3*nBeads_, &converging, lanes(positions_), lanes(converged_)
+            );
         }
         if (!anyActive)
         {
