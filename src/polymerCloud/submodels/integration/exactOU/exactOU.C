@@ -117,7 +117,9 @@ void Foam::polymer::integrationModels::exactOU::integrateChain
         cachedDeltaT_ = deltaT;
     }
 
-    const coefficients& k = cache_[chains.typeIndex(chaini)];
+    // A copy: the loop's stores to x and v could alias the cache, so the
+    // compiler would reload a referenced coefficient at every bead
+    const coefficients k = cache_[chains.typeIndex(chaini)];
     const label first = chains.start(chaini);
     const label n = chains.size(chaini);
 
