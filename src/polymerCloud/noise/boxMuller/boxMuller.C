@@ -16,15 +16,6 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-// The transform is bound by the latency of each deviate's chain of
-// operations (a division, a square root, three polynomials), not by the
-// arithmetic: the processor overlaps only as many iterations as its
-// floating-point scheduler holds. GCC's first scheduling pass (off by
-// default on x86-64) interleaves the independent chains of a vectorised
-// iteration, so more of them are ready at once. It moves instructions, not
-// roundings: the results are the same bits.
-#pragma GCC optimize ("schedule-insns", "sched-pressure")
-
 #include "boxMuller.H"
 
 #include <cmath>
@@ -58,8 +49,33 @@ namespace Foam
 namespace polymer
 {
 
+//- A block of pairs' values, one per pair (GCC's vector extension:
+//  element-wise arithmetic, four 256-bit registers with AVX2, two 512-bit
+//  with AVX-512, eight 128-bit with SSE2). The transform is bound by the
+//  latency of each deviate's chain of operations (a division, a square
+//  root, three polynomials), not by the arithmetic: the processor overlaps
+//  only as many chains as its floating-point scheduler holds. A block's
+//  statements hold several registers' independent chains side by side,
+//  and Make/options compiles this file with GCC's first scheduling pass
+//  (off by default on x86-64), which interleaves them further.
+static constexpr int blockSize = 16;
+
+typedef double block __attribute__
+((
+    vector_size(blockSize*sizeof(double)),
+    aligned(blockSize*sizeof(double))
+));
+
+typedef uint64_t blockBits __attribute__
+((
+    vector_size(blockSize*sizeof(uint64_t)),
+    aligned(blockSize*sizeof(uint64_t))
+));
+
+
 // Bit copies between a double and its 64-bit pattern (memcpy: no aliasing
-// issue, and the compiler turns it into a register move)
+// issue, and the compiler turns it into a register move), and between
+// blocks of them
 static inline uint64_t bitsOf(const double x)
 {
     uint64_t bits;
@@ -76,9 +92,46 @@ static inline double fromBits(const uint64_t bits)
 }
 
 
+__attribute__((always_inline))
+static inline blockBits bitsOf(const block& x)
+{
+    return __builtin_bit_cast(blockBits, x);
+}
+
+
+__attribute__((always_inline))
+static inline block fromBits(const blockBits& bits)
+{
+    return __builtin_bit_cast(block, bits);
+}
+
+
+//- The square root of each element (one instruction per register)
+__attribute__((always_inline))
+static inline double squareRoot(const double x)
+{
+    return std::sqrt(x);
+}
+
+
+__attribute__((always_inline))
+static inline block squareRoot(const block& x)
+{
+    block root;
+    for (int j = 0; j < blockSize; ++j)
+    {
+        root[j] = std::sqrt(x[j]);
+    }
+    return root;
+}
+
+
 // ln u for a positive normal u: fdlibm's e_log.c without its branches
-// (no special values to handle for uniforms in (0, 1))
-static inline double logPositive(const double u)
+// (no special values to handle for uniforms in (0, 1)); of a double or
+// of each element of a block, with the same operations
+template<class Real>
+__attribute__((always_inline))
+static inline Real logPositive(const Real& u)
 {
     const double ln2Hi = 6.93147180369123816490e-01;    // 3fe62e42 fee00000
     const double ln2Lo = 1.90821492927058770002e-10;    // 3dea39ef 35793c76
@@ -95,32 +148,33 @@ static inline double logPositive(const double u)
     // routines): the offset keeps the difference positive, and k becomes
     // a double through the mantissa of 2^52 (64-bit integer to double
     // conversions do not vectorise before AVX-512)
-    const uint64_t bits = bitsOf(u);
+    const auto bits = bitsOf(u);
     const uint64_t sqrtHalfBits = 0x3fe6a09e667f3bcdULL;
     const uint64_t offset = uint64_t(1024) << 52;
-    const uint64_t shifted = bits - sqrtHalfBits + offset;
-    const uint64_t exponentField = shifted >> 52;
-    const double m =
-        fromBits(bits - (exponentField << 52) + offset);
+    const auto shifted = bits - sqrtHalfBits + offset;
+    const auto exponentField = shifted >> 52;
+    const Real m = fromBits(bits - (exponentField << 52) + offset);
     const double twoPower52 = 4503599627370496.0;
-    const double k =
+    const Real k =
         fromBits(exponentField | bitsOf(twoPower52)) - (twoPower52 + 1024);
 
-    const double f = m - 1;
-    const double s = f/(2 + f);
-    const double z = s*s;
-    const double w = z*z;
-    const double t1 = w*(Lg2 + w*(Lg4 + w*Lg6));
-    const double t2 = z*(Lg1 + w*(Lg3 + w*(Lg5 + w*Lg7)));
-    const double R = t2 + t1;
-    const double hfsq = 0.5*f*f;
+    const Real f = m - 1;
+    const Real s = f/(2 + f);
+    const Real z = s*s;
+    const Real w = z*z;
+    const Real t1 = w*(Lg2 + w*(Lg4 + w*Lg6));
+    const Real t2 = z*(Lg1 + w*(Lg3 + w*(Lg5 + w*Lg7)));
+    const Real R = t2 + t1;
+    const Real hfsq = 0.5*f*f;
 
     return k*ln2Hi - ((hfsq - (s*(hfsq + R) + k*ln2Lo)) - f);
 }
 
 
 // sin t and cos t for |t| <= pi/4: fdlibm's k_sin.c and k_cos.c
-static inline void sinCosKernel(const double t, double& s, double& c)
+template<class Real>
+__attribute__((always_inline))
+static inline void sinCosKernel(const Real& t, Real& s, Real& c)
 {
     const double S1 = -1.66666666666666324348e-01;
     const double S2 = 8.33333333332248946124e-03;
@@ -136,40 +190,69 @@ static inline void sinCosKernel(const double t, double& s, double& c)
     const double C5 = 2.08757232129817482790e-09;
     const double C6 = -1.13596475577881948265e-11;
 
-    const double z = t*t;
+    const Real z = t*t;
 
-    const double rs = S2 + z*(S3 + z*(S4 + z*(S5 + z*S6)));
+    const Real rs = S2 + z*(S3 + z*(S4 + z*(S5 + z*S6)));
     s = t + z*t*(S1 + z*rs);
 
-    const double rc = z*(C1 + z*(C2 + z*(C3 + z*(C4 + z*(C5 + z*C6)))));
-    const double hz = 0.5*z;
-    const double w = 1 - hz;
+    const Real rc = z*(C1 + z*(C2 + z*(C3 + z*(C4 + z*(C5 + z*C6)))));
+    const Real hz = 0.5*z;
+    const Real w = 1 - hz;
     c = w + (((1 - w) - hz) + z*rc);
 }
 
 
 // sin and cos of 2 pi u for u in [0, 1)
-static inline void sinCosTurn(const double u, double& s, double& c)
+template<class Real>
+__attribute__((always_inline))
+static inline void sinCosTurn(const Real& u, Real& s, Real& c)
 {
     // 2 pi u = q pi/2 + t: quarter turns x = 4 u, q = round(x) by adding
     // 1.5 2^52 (a tie goes to even, |t| <= pi/4 either way), after which
     // the low bits of the sum are those of q; x - q is exact
-    const double x = 4*u;
+    const Real x = 4*u;
     const double round = 6755399441055744.0;
-    const uint64_t qBits = bitsOf(x + round);
-    const double t = 1.57079632679489661923*(x - (fromBits(qBits) - round));
+    const auto qBits = bitsOf(x + round);
+    const Real t = 1.57079632679489661923*(x - (fromBits(qBits) - round));
 
-    double sinT, cosT;
+    Real sinT, cosT;
     sinCosKernel(t, sinT, cosT);
 
     // Quadrants 1 and 3 swap sine and cosine; sine is negative in
     // quadrants 2 and 3, cosine in 1 and 2. All on the bits, without
     // comparisons or branches, which would stop the loop's vectorisation.
-    const uint64_t sinBits = bitsOf(sinT);
-    const uint64_t cosBits = bitsOf(cosT);
-    const uint64_t swap = (sinBits ^ cosBits) & (0 - (qBits & 1));
+    const auto sinBits = bitsOf(sinT);
+    const auto cosBits = bitsOf(cosT);
+    const auto swap = (sinBits ^ cosBits) & (0 - (qBits & 1));
     s = fromBits((sinBits ^ swap) ^ ((qBits & 2) << 62));
     c = fromBits((cosBits ^ swap) ^ (((qBits + 1) & 2) << 62));
+}
+
+// The transform of the pairs p = first, ..., first + n - 1 of u, with
+// Real a double (n = 1) or a block (n = blockSize)
+template<class Real>
+__attribute__((always_inline))
+static inline void transformPairs(const label first, scalar* u)
+{
+    constexpr int n = sizeof(Real)/sizeof(double);
+    Real u1, u2;
+    for (int j = 0; j < n; ++j)
+    {
+        reinterpret_cast<double*>(&u1)[j] = u[2*(first + j)];
+        reinterpret_cast<double*>(&u2)[j] = u[2*(first + j) + 1];
+    }
+
+    const Real radius = squareRoot(-2*logPositive(u1));
+    Real s, c;
+    sinCosTurn(u2, s, c);
+    const Real x = radius*c;
+    const Real y = radius*s;
+
+    for (int j = 0; j < n; ++j)
+    {
+        u[2*(first + j)] = reinterpret_cast<const double*>(&x)[j];
+        u[2*(first + j) + 1] = reinterpret_cast<const double*>(&y)[j];
+    }
 }
 
 } // End namespace polymer
@@ -181,17 +264,16 @@ static inline void sinCosTurn(const double u, double& s, double& c)
 BOX_MULLER_TARGETS
 void Foam::polymer::boxMuller::transform(const label nPairs, scalar* u)
 {
-    // One pair after another, with no dependence between them: the
-    // compiler vectorises the loop (-O3; -fno-math-errno for sqrt)
-    for (label p = 0; p < nPairs; ++p)
+    // Whole blocks, then the pairs left one at a time: the same operations
+    // on each pair, so the same bits
+    label p = 0;
+    for (; p + blockSize <= nPairs; p += blockSize)
     {
-        const double radius = std::sqrt(-2*logPositive(u[2*p]));
-
-        double s, c;
-        sinCosTurn(u[2*p + 1], s, c);
-
-        u[2*p] = radius*c;
-        u[2*p + 1] = radius*s;
+        transformPairs<block>(p, u);
+    }
+    for (; p < nPairs; ++p)
+    {
+        transformPairs<double>(p, u);
     }
 }
 
