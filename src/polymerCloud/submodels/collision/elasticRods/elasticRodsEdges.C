@@ -77,6 +77,17 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
     const scalar margin = growMargin(rod, t, dt);
     const vector fat(vector::uniform(margin));
     scalar budget = margin;
+
+    // The rod and each edge in turn, filled element by element (as in
+    // predict: not from initializer lists, whose copies stalled the reads)
+    FixedList<point, 4> x;
+    x[0] = p0 + shift;
+    x[1] = p1 + shift;
+    FixedList<vector, 4> moved;
+    moved[0] = rest*velocity_[a0];
+    moved[1] = rest*velocity_[a1];
+    moved[2] = Zero;
+    moved[3] = Zero;
     for
     (
         const label edgei
@@ -85,16 +96,10 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
     {
         // An edge is a rod that does not move: one the rod stays apart
         // from needs no crossing-time solve
+        x[2] = edges.start(edgei);
+        x[3] = edges.end(edgei);
         scalar clearance;
-        if
-        (
-            sweptApart
-            (
-                {p0 + shift, p1 + shift, edges.start(edgei), edges.end(edgei)},
-                {rest*velocity_[a0], rest*velocity_[a1], Zero, Zero},
-                clearance
-            )
-        )
+        if (sweptApart(x, moved, clearance))
         {
             budget = min(budget, clearance);
             continue;

@@ -142,15 +142,19 @@ void Foam::polymer::collisionModels::elasticRods::predict
     const label b1 = rods_[rodPair.second()].second();
     const vector& shift = grid_.pairShift(pairi);
 
-    const FixedList<point, 4> x
-    ({
-        positionAt(a0, t), positionAt(a1, t),
-        positionAt(b0, t) + shift, positionAt(b1, t) + shift
-    });
-    const FixedList<vector, 4> v
-    ({
-        velocity_[a0], velocity_[a1], velocity_[b0], velocity_[b1]
-    });
+    // Filled element by element, not from initializer lists (and the
+    // velocities not copied at all): GCC copied those through the stack in
+    // pieces of other widths than it then read, and each read waited for
+    // the stores (failed store forwarding)
+    FixedList<point, 4> x;
+    x[0] = positionAt(a0, t);
+    x[1] = positionAt(a1, t);
+    x[2] = positionAt(b0, t) + shift;
+    x[3] = positionAt(b1, t) + shift;
+    const vector& va0 = velocity_[a0];
+    const vector& va1 = velocity_[a1];
+    const vector& vb0 = velocity_[b0];
+    const vector& vb1 = velocity_[b1];
 
     // A crossing is a point of both rods at one time: rods that stay
     // apart need no crossing-time solve. The margin is far beyond the
@@ -158,15 +162,14 @@ void Foam::polymer::collisionModels::elasticRods::predict
     // place (they accept one with the rods' closest points inside both
     // rods, at an angle of at least 1e-6)
     const scalar rest = dt - t;
+    FixedList<vector, 4> moved;
+    moved[0] = rest*va0;
+    moved[1] = rest*va1;
+    moved[2] = rest*vb0;
+    moved[3] = rest*vb1;
     sizePairData();
     scalar clearance = 0;
-    if
-    (
-        sweptApart
-        (
-            x, {rest*v[0], rest*v[1], rest*v[2], rest*v[3]}, clearance
-        )
-    )
+    if (sweptApart(x, moved, clearance))
     {
         pairBudget_[pairi] = clearance + pairDrift(pairi);
         limitDrift(pairi);
@@ -177,7 +180,7 @@ void Foam::polymer::collisionModels::elasticRods::predict
 
     const rodPairCrossing pair
     (
-        x[0], x[1], x[2], x[3], v[0], v[1], v[2], v[3]
+        x[0], x[1], x[2], x[3], va0, va1, vb0, vb1
     );
 
     label side = 0;
