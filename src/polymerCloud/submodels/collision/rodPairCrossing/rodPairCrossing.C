@@ -23,10 +23,19 @@ Foam::polymer::rodPairCrossing::rodPairCrossing
     const vector& vi, const vector& vi1,
     const vector& vj, const vector& vj1
 )
-:
-    x({xi, xi1, xj, xj1}),
-    v({vi, vi1, vj, vj1})
-{}
+{
+    // Element by element, not from initializer lists, which GCC copied
+    // through the stack in pieces of other widths than it read them back
+    // (failed store forwarding)
+    x[0] = xi;
+    x[1] = xi1;
+    x[2] = xj;
+    x[3] = xj1;
+    v[0] = vi;
+    v[1] = vi1;
+    v[2] = vj;
+    v[3] = vj1;
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
