@@ -107,8 +107,7 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
 
         const rodPairCrossing pair
         (
-            p0 + shift, p1 + shift, edges.start(edgei), edges.end(edgei),
-            velocity_[a0], velocity_[a1], Zero, Zero
+            x[0], x[1], x[2], x[3], velocity_[a0], velocity_[a1], Zero, Zero
         );
         const label pairi = edgePair(rod, edgei);
         label side = 0;
