@@ -26,6 +26,9 @@ Description
       found tet's own transform and face triangle, to the bit;
     - in units of the cell, the coordinates of OpenFOAM's
       tetrahedron::pointToBarycentric, to the bit.
+    The cells' fans (cellFaceFans) give every tet's face triangle, to the
+    label, as tetIndices::faceTriIs does, on the faces' owner and
+    neighbour sides (the box, the L-shaped channel, the periodic box).
     And the bead sampler (beadSampler), which keeps each bead's tet and
     its transform from locate to locate: 50 chains of 10 beads in the box
     in micrometres, located, then over 20 rounds moved by up to 0.3 cells
@@ -39,6 +42,7 @@ Description
 
 #include "wallScenes.H"
 #include "cellLocator.H"
+#include "cellFaceFans.H"
 #include "beadSampler.H"
 #include "interpolation.H"
 #include "volPointInterpolation.H"
@@ -133,8 +137,12 @@ void checkSearches(const word& caseName, const scalar h)
 
             // The search's transform and triangle are the found tet's,
             // to the bit: they place any point as the tet's own do
-            EXPECT_EQ(kept.triangle, again.faceTriIs(*mesh))
-                << caseName << " point " << str(p);
+            const triFace ownTriangle(again.faceTriIs(*mesh));
+            for (label j = 0; j < 3; ++j)
+            {
+                EXPECT_EQ(kept.triangle[j], ownTriangle[j])
+                    << caseName << " point " << str(p);
+            }
             const polymer::tetTransform own(locator.transform(again));
             for (const point& q : {p, start, mesh->C()[again.cell()]})
             {
@@ -162,6 +170,48 @@ void checkSearches(const word& caseName, const scalar h)
 
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+TEST(cellFaceFans, GiveEveryTetsFaceTriangle)
+{
+    for (const word caseName : {"wallBox", "wallL", "periodicBox"})
+    {
+        const fvMesh* mesh = meshOf(caseName);
+        ASSERT_TRUE(mesh);
+        const polymer::cellFaceFans fans(*mesh);
+        label nTets = 0, nNeighbourSide = 0;
+        forAll(mesh->cells(), celli)
+        {
+            const cell& faces = mesh->cells()[celli];
+            forAll(faces, k)
+            {
+                const label facei = faces[k];
+                const polymer::cellFaceFans::fan fan(fans.faceFan(celli, k));
+                ASSERT_EQ(fan.nTets(), mesh->faces()[facei].size() - 2);
+                for (label tetPti = 1; tetPti <= fan.nTets(); ++tetPti)
+                {
+                    // Label by label: triFace's == takes a triangle
+                    // reversed for the same
+                    const triFace tri(fan.triangle(tetPti));
+                    const triFace expected
+                    (
+                        tetIndices(celli, facei, tetPti).faceTriIs(*mesh)
+                    );
+                    for (label j = 0; j < 3; ++j)
+                    {
+                        EXPECT_EQ(tri[j], expected[j])
+                            << caseName << " cell " << celli
+                            << " face " << facei << " tet " << tetPti;
+                    }
+                    ++nTets;
+                    nNeighbourSide += (mesh->faceOwner()[facei] != celli);
+                }
+            }
+        }
+        EXPECT_EQ(nTets, 12*mesh->nCells()) << caseName;
+        EXPECT_GT(nNeighbourSide, 0) << caseName;
+    }
+}
+
 
 TEST(cellLocator, FindsTheTetAndCoordinatesInCellUnits)
 {

@@ -42,7 +42,8 @@ Foam::polymer::cellLocator::cellLocator(const polyMesh& mesh)
     MeshObject<polyMesh, GeometricMeshObject, cellLocator>(mesh),
     boxes_(mesh.nCells()),
     tree_(),
-    planes_(mesh)
+    planes_(mesh),
+    fans_(mesh)
 {
     const pointField& points = mesh.points();
     const cellList& cells = mesh.cells();
@@ -100,10 +101,22 @@ bool Foam::polymer::cellLocator::inTet
     // in absolute terms, which is every tet of a mesh in metres with
     // cells of a micrometre. Its arithmetic otherwise (tetTransform)
     place.triangle = tet.faceTriIs(mesh);
-    const tetPointRef points(tetPoints(mesh, tet.cell(), place.triangle));
+    return inTet(mesh, p, tet.cell(), place);
+}
+
+
+bool Foam::polymer::cellLocator::inTet
+(
+    const polyMesh& mesh,
+    const point& p,
+    const label celli,
+    tetPlace& place
+)
+{
+    const tetPointRef points(tetPoints(mesh, celli, place.triangle));
     const tensor edges(tetTransform::edgeMatrix(points));
     const scalar detT = det(edges);
-    if (!(mag(detT/mesh.cellVolumes()[tet.cell()]) > SMALL))
+    if (!(mag(detT/mesh.cellVolumes()[celli]) > SMALL))
     {
         return false;
     }
@@ -194,18 +207,19 @@ bool Foam::polymer::cellLocator::inFan
 (
     const point& p,
     const label celli,
-    const label facei,
+    const label k,
     tetIndices& tet,
     tetPlace& place
 ) const
 {
-    const label nTets = mesh().faces()[facei].size() - 2;
+    const cellFaceFans::fan fan(fans_.faceFan(celli, k));
+    const label nTets = fan.nTets();
     for (label tetPti = 1; tetPti <= nTets; ++tetPti)
     {
-        const tetIndices candidate(celli, facei, tetPti);
-        if (inTet(mesh(), p, candidate, place))
+        place.triangle = fan.triangle(tetPti);
+        if (inTet(mesh(), p, celli, place))
         {
-            tet = candidate;
+            tet = tetIndices(celli, planes_.plane(celli, k).face, tetPti);
             return true;
         }
     }
@@ -229,17 +243,16 @@ Foam::label Foam::polymer::cellLocator::rayWalk
     for (label stepi = 0; stepi < 16; ++stepi)
     {
         bool inside = false;
-        label across = -1;
-        const label facei =
-            planes_.exitFace(p, centres[celli], celli, inside, across);
-        if (facei < 0)
+        const label k = planes_.exitPlane(p, centres[celli], celli, inside);
+        if (k < 0)
         {
             return -1;
         }
         if (inside)
         {
-            return inFan(p, celli, facei, tet, place) ? celli : -1;
+            return inFan(p, celli, k, tet, place) ? celli : -1;
         }
+        const label across = planes_.plane(celli, k).across;
         if (across < 0)
         {
             return -1;
@@ -473,40 +486,43 @@ void Foam::polymer::cellLocator::prefetch
 {
 #if defined(__GNUC__)
     const label celli = tet.cell();
-    const label facei = tet.face();
-    if (celli < 0 || facei < 0 || facei >= mesh().nFaces())
+    if (celli < 0)
     {
         return;
     }
-    const faceList& faces = mesh().faces();
     if (stage == 0)
     {
         planes_.prefetch(celli, 0);
-        __builtin_prefetch(&faces[facei]);
-        __builtin_prefetch(&mesh().tetBasePtIs()[facei]);
+        fans_.prefetch(celli, 0);
         __builtin_prefetch(&mesh().cellCentres()[celli]);
         __builtin_prefetch(&mesh().cellVolumes()[celli]);
     }
     else if (stage == 1)
     {
-        __builtin_prefetch(faces[facei].cdata());
         planes_.prefetch(celli, 1);
+        fans_.prefetch(celli, 1);
     }
     else
     {
-        // The tet's points, as tetIndices::faceTriIs numbers them
-        const face& f = faces[facei];
-        const label n = f.size();
-        const label tetPti = tet.tetPt();
-        if (tetPti < 1 || tetPti > n - 2)
+        // The tet's points, from its face's fan in the cell's block
+        const label nFaces = planes_.nFaces(celli);
+        for (label k = 0; k < nFaces; ++k)
         {
-            return;
+            if (planes_.plane(celli, k).face == tet.face())
+            {
+                const cellFaceFans::fan fan(fans_.faceFan(celli, k));
+                if (tet.tetPt() < 1 || tet.tetPt() > fan.nTets())
+                {
+                    return;
+                }
+                const triFace triangle(fan.triangle(tet.tetPt()));
+                const pointField& points = mesh().points();
+                __builtin_prefetch(&points[triangle[0]]);
+                __builtin_prefetch(&points[triangle[1]]);
+                __builtin_prefetch(&points[triangle[2]]);
+                return;
+            }
         }
-        const label base = max(mesh().tetBasePtIs()[facei], label(0));
-        const pointField& points = mesh().points();
-        __builtin_prefetch(&points[f[base]]);
-        __builtin_prefetch(&points[f[(base + tetPti) % n]]);
-        __builtin_prefetch(&points[f[(base + tetPti + 1) % n]]);
     }
 #endif
 }
