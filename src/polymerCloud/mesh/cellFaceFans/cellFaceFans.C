@@ -57,7 +57,8 @@ Foam::polymer::cellFaceFans::cellFaceFans(const polyMesh& mesh)
     if (nUnfanned)
     {
         WarningInFunction
-            << nUnfanned << " faces of cells (counted once a cell) have no"
+            << nUnfanned << " faces of cells (an internal face for each of its"
+            << " two cells) have no"
             << " base point that gives a valid tet decomposition;"
             << " they are fanned from their first point" << endl;
     }
