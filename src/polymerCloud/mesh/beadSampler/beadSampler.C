@@ -242,18 +242,37 @@ void Foam::polymer::beadSampler::locateUntracked
         {
             ++chaini;
         }
-        const tetIndices start
-        (
-            i > chains.start(chaini) ? hostTet[i - 1] : tetIndices()
-        );
-        cellLocator::tetPlace place;
-        hostTet[i] =
-            bounds.contains(p)
-          ? locator_.findTet(p, start, place)
-          : tetIndices();
-        if (hostTet[i].cell() >= 0)
+        const bool fromBefore =
+            i > chains.start(chaini) && hostTet[i - 1].cell() >= 0;
+        barycentric coordinates;
+        if (!bounds.contains(p))
         {
-            keepPlace(place, i, transform[i], triangle[i]);
+            hostTet[i] = tetIndices();
+        }
+        else if
+        (
+            fromBefore
+         && cellLocator::stillIn(p, transform[i - 1], coordinates)
+        )
+        {
+            // In the tet of the bead before, tested by its kept transform
+            // as findTet would test it on the mesh, to the bit
+            hostCoordinates_[i] = coordinates;
+            hostTet[i] = hostTet[i - 1];
+            transform[i] = transform[i - 1];
+            triangle[i] = triangle[i - 1];
+        }
+        else
+        {
+            cellLocator::tetPlace place;
+            hostTet[i] =
+                fromBefore
+              ? locator_.search(p, hostTet[i - 1], place)
+              : locator_.findTet(p, tetIndices(), place);
+            if (hostTet[i].cell() >= 0)
+            {
+                keepPlace(place, i, transform[i], triangle[i]);
+            }
         }
     }
 }
