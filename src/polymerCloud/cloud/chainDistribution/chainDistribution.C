@@ -18,6 +18,7 @@ License
 #include "clockTime.H"
 #include "pointOwners.H"
 #include "cellLocator.H"
+#include "beadSampler.H"
 #include "bitSet.H"
 #include "UIListStream.H"
 
@@ -136,6 +137,7 @@ Foam::polymer::chainDistribution::chainDistribution
     sorted_(sorted),
     neighbours_(mesh),
     referenceCells_(-1),
+    keptTets_(nullptr),
     nMoved_(0),
     nWrapped_(0),
     seconds_(0)
@@ -164,6 +166,12 @@ Foam::polymer::chainDistribution::locateReferenceBeads(const bool unknownOnly)
             continue;
         }
         const point p = periodic_.wrap(x[i]);
+        if (keptTets_ && keptTets_->keptCell(chains_, i, p, cell[i]))
+        {
+            // The cell the search from cell[i] finds (a point on a face
+            // between two cells, to SMALL, could be given the other)
+            continue;
+        }
         cell[i] = bounds.contains(p) ? locator.findCell(p, cell[i]) : -1;
     }
 }

@@ -294,6 +294,10 @@ void Foam::polymer::polymerCloud::selectModels(const dictionary& subModels)
             flow_->solvesFlow() || wall_->active()
         )
     );
+    if (const beadSampler* sampler = flow_->beadLocations())
+    {
+        distribution_->useKeptTets(*sampler);
+    }
     collisionGroups_.reset
     (
         new collisionGroups

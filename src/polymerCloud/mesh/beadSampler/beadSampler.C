@@ -630,6 +630,33 @@ void Foam::polymer::beadSampler::sample
 }
 
 
+bool Foam::polymer::beadSampler::keptCell
+(
+    const polymerChains& chains,
+    const label i,
+    const point& p,
+    label& celli
+) const
+{
+    if (!hostTets_.current(chains) || !hostTransforms_.current(chains))
+    {
+        return false;
+    }
+    const tetIndices& tet = hostTets_.values()[i];
+    barycentric coordinates;
+    if
+    (
+        tet.cell() < 0
+     || !cellLocator::stillIn(p, hostTransforms_.values()[i], coordinates)
+    )
+    {
+        return false;
+    }
+    celli = tet.cell();
+    return true;
+}
+
+
 Foam::tmp<Foam::pointVectorField> Foam::polymer::beadSampler::pointValues
 (
     const volVectorField& cellValues
