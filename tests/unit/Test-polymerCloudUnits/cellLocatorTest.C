@@ -30,7 +30,9 @@ Description
     label, as tetIndices::faceTriIs does, on the faces' owner and
     neighbour sides (the box, the L-shaped channel, the periodic box).
     And the bead sampler (beadSampler), which keeps each bead's tet and
-    its transform from locate to locate: 50 chains of 10 beads in the box
+    its transform from locate to locate (and gives a bead's cell from them
+    while the chains' layout is the located one, keptCell): 50 chains of
+    10 beads in the box
     in micrometres, located, then over 20 rounds moved by up to 0.3 cells
     a bead, reordered, one removed and one appended, and located again;
     every bead's tet is in the cell that holds it, and the cell centres'
@@ -284,6 +286,8 @@ TEST(beadSampler, KeepsEachBeadsTetThroughMovesAndReorders)
 
     label nChecked = 0;
     label nSampled = 0;
+    label nStayed = 0;
+    label nLeft = 0;
     for (label round = 0; round < 20; ++round)
     {
         sampler.locate(chains);
@@ -315,6 +319,12 @@ TEST(beadSampler, KeepsEachBeadsTetThroughMovesAndReorders)
             }
             EXPECT_EQ(wavyKept[i], wavyGeneric[i])
                 << "round " << round << " bead " << i << str(p);
+
+            // Where it was located: in its kept tet's cell
+            label kept = -1;
+            EXPECT_TRUE(sampler.keptCell(chains, i, p, kept))
+                << "round " << round << " bead " << i << str(p);
+            EXPECT_EQ(kept, tets[i].cell()) << "round " << round;
         }
 
         // Moves within the box, a new order, one chain fewer, one more
@@ -329,14 +339,49 @@ TEST(beadSampler, KeepsEachBeadsTetThroughMovesAndReorders)
             x = (cmptMin(moved) > 0.5*h && cmptMax(moved) < 9.5*h)
               ? moved : x;
         }
+        // Moved, the layout unchanged: a bead still in its kept tet is in
+        // that tet's cell; one that left it is not given a cell
+        forAll(chains.positions(), i)
+        {
+            const point& p = chains.positions()[i];
+            label kept = -1;
+            if (sampler.keptCell(chains, i, p, kept))
+            {
+                const label expected = boxCell(p, h, 1e-9);
+                if (expected >= 0)
+                {
+                    EXPECT_EQ(kept, expected)
+                        << "round " << round << " bead " << i << str(p);
+                }
+                ++nStayed;
+            }
+            else
+            {
+                EXPECT_EQ(kept, -1) << "round " << round << " bead " << i;
+                ++nLeft;
+            }
+        }
+
         labelList newToOld(identity(chains.nChains()));
         std::shuffle(newToOld.begin(), newToOld.end(), engine);
         chains.reorder(newToOld);
+
+        // A new layout: no bead is given a cell from the kept tets
+        label nAfterReorder = 0;
+        forAll(chains.positions(), i)
+        {
+            label kept = -1;
+            nAfterReorder +=
+                sampler.keptCell(chains, i, chains.positions()[i], kept);
+        }
+        EXPECT_EQ(nAfterReorder, 0) << "round " << round;
         chains.remove(labelList({label(u(engine)*chains.nChains())}));
         newChain(chains, nextId++);
     }
     EXPECT_GT(nChecked, 9000);
     EXPECT_GT(nSampled, 4000);
+    EXPECT_GT(nStayed, 500);
+    EXPECT_GT(nLeft, 500);
 }
 
 

@@ -265,10 +265,10 @@ void Foam::polymer::beadSampler::locateUntracked
         else
         {
             cellLocator::tetPlace place;
-            hostTet[i] =
-                fromBefore
-              ? locator_.search(p, hostTet[i - 1], place)
-              : locator_.findTet(p, tetIndices(), place);
+            hostTet[i] = locator_.search
+            (
+                p, fromBefore ? hostTet[i - 1] : tetIndices(), place
+            );
             if (hostTet[i].cell() >= 0)
             {
                 keepPlace(place, i, transform[i], triangle[i]);
