@@ -288,6 +288,14 @@ void Foam::polymer::polymerCoupling::deposit
                 continue;
             }
 
+            if (coeff == 0)
+            {
+                // Explicit coupling: no read of the cell's U, which is
+                // half the scattered loads of a bead here
+                momentumTransfer_[celli] += transfer/rho_;
+                continue;
+            }
+
             // The implicit part's explicit counterpart: the cell's U now,
             // so that in a steady flow the two cancel (at the bead's
             // interpolated U they would leave a spurious force wherever
