@@ -187,7 +187,10 @@ Foam::polymer::polymerCloud::polymerCloud
     functions_(),
     evolveSeconds_(0),
     pathTimes_(),
-    beadSteps_(0)
+    beadSteps_(0),
+    firstStepSeconds_(0),
+    firstStepBeadSteps_(0),
+    firstStepDone_(false)
 {
     // Keep the file's name for messages when given a dictionary read from it
     if (!properties.name().empty())
@@ -453,6 +456,12 @@ void Foam::polymer::polymerCloud::evolve()
     // The step's paths up to its bookkeeping, the cloud functions' laps
     // within the step included
     evolveSeconds_ += pathTimes_.sinceStart();
+    if (!firstStepDone_)
+    {
+        firstStepSeconds_ = evolveSeconds_;
+        firstStepBeadSteps_ = beadSteps_;
+        firstStepDone_ = true;
+    }
 
     for (polymerCloudFunction& function : functions_)
     {
