@@ -176,6 +176,21 @@ void Foam::polymer::beadSampler::prefetchBead
 }
 
 
+void Foam::polymer::beadSampler::prefetchTrianglePoints
+(
+    const label i
+) const
+{
+#if defined(__GNUC__)
+    const triFace& triangle = hostTriangles_.values()[i];
+    const pointField& points = mesh_.points();
+    __builtin_prefetch(&points[triangle[0]]);
+    __builtin_prefetch(&points[triangle[1]]);
+    __builtin_prefetch(&points[triangle[2]]);
+#endif
+}
+
+
 void Foam::polymer::beadSampler::prefetchPointValues
 (
     const vectorField& cellValues,
@@ -328,13 +343,21 @@ void Foam::polymer::beadSampler::searchLeavers
     // entries
     const bool prefetching = prefetches();
     const label nLeavers = leaverOrder_.size();
-    const int nStages = 3;
+    const int nStages = 2;
     forAll(leaverOrder_, k)
     {
         if (prefetching)
         {
-            prefetchMesh(leaverTets_, leaverOrder_, k, nStages);
-            const label later = k + prefetchSpacing*(nStages + 1);
+            // The cells' data 16 and 24 places ahead; the points of the
+            // old tets 8 ahead (most leavers stay in their cell, whose
+            // tets share points); the beads' own entries 32 ahead
+            const label next = k + prefetchSpacing;
+            prefetchMesh(leaverTets_, leaverOrder_, next, nStages);
+            if (next < nLeavers)
+            {
+                prefetchTrianglePoints(leaverBeads_[leaverOrder_[next]]);
+            }
+            const label later = k + prefetchSpacing*(nStages + 2);
             if (later < nLeavers)
             {
                 prefetchBead(leaverBeads_[leaverOrder_[later]], true);

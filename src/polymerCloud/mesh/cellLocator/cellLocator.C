@@ -497,32 +497,10 @@ void Foam::polymer::cellLocator::prefetch
         __builtin_prefetch(&mesh().cellCentres()[celli]);
         __builtin_prefetch(&mesh().cellVolumes()[celli]);
     }
-    else if (stage == 1)
+    else
     {
         planes_.prefetch(celli, 1);
         fans_.prefetch(celli, 1);
-    }
-    else
-    {
-        // The tet's points, from its face's fan in the cell's block
-        const label nFaces = planes_.nFaces(celli);
-        for (label k = 0; k < nFaces; ++k)
-        {
-            if (planes_.plane(celli, k).face == tet.face())
-            {
-                const cellFaceFans::fan fan(fans_.faceFan(celli, k));
-                if (tet.tetPt() < 1 || tet.tetPt() > fan.nTets())
-                {
-                    return;
-                }
-                const triFace triangle(fan.triangle(tet.tetPt()));
-                const pointField& points = mesh().points();
-                __builtin_prefetch(&points[triangle[0]]);
-                __builtin_prefetch(&points[triangle[1]]);
-                __builtin_prefetch(&points[triangle[2]]);
-                return;
-            }
-        }
     }
 #endif
 }
