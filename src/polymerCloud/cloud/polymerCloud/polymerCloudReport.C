@@ -156,8 +156,9 @@ void Foam::polymer::polymerCloud::writeReport(Ostream& os) const
     {
         // A short run's figure is mostly its start: the steps after the
         // first give the rate a longer run tends to
-        os  << "    after the first step (which also builds the point"
-            << " interpolation's weights and searches every bead afresh): "
+        os  << "    after the first step (which also does the run's start-up"
+            << " work, such as a field's interpolation weights and every"
+            << " bead's first search): "
             << laterBeadSteps << " bead-steps in " << laterSeconds << " s, "
             << laterBeadSteps/laterSeconds << " bead-steps/s" << nl;
     }
