@@ -146,7 +146,7 @@ void Foam::polymer::beadSampler::prefetchMesh
         const label ahead = k + prefetchSpacing*(nStages - stage);
         if (ahead < order.size())
         {
-            locator_.prefetch(tets[order[ahead]], stage);
+            locator_.prefetch(tets[order[ahead]].cell(), stage);
         }
     }
 }

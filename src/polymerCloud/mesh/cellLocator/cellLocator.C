@@ -480,12 +480,11 @@ Foam::polymer::tetTransform Foam::polymer::cellLocator::transform
 
 void Foam::polymer::cellLocator::prefetch
 (
-    const tetIndices& tet,
+    const label celli,
     const int stage
 ) const
 {
 #if defined(__GNUC__)
-    const label celli = tet.cell();
     if (celli < 0)
     {
         return;
