@@ -580,7 +580,13 @@ void Foam::polymer::chainDistribution::update()
     wrap();
     locateReferenceBeads();
     distribute();
-    sort();
+
+    // What a time step writes is in order: a restart sorts its chains
+    const Time& runTime = mesh_.time();
+    if (runTime.timeIndex() % sortInterval == 0 || runTime.writeTime())
+    {
+        sort();
+    }
 }
 
 
