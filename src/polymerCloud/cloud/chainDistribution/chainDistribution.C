@@ -578,12 +578,20 @@ void Foam::polymer::chainDistribution::wrap()
 void Foam::polymer::chainDistribution::update()
 {
     wrap();
-    locateReferenceBeads();
-    distribute();
 
     // What a time step writes is in order: a restart sorts its chains
     const Time& runTime = mesh_.time();
-    if (runTime.timeIndex() % sortInterval == 0 || runTime.writeTime())
+    const bool sortNow =
+        runTime.timeIndex() % sortInterval == 0 || runTime.writeTime();
+
+    // The reference beads' cells give the chains' owners in a parallel
+    // run; in a serial one they serve the order alone
+    if (Pstream::parRun() || sortNow)
+    {
+        locateReferenceBeads();
+    }
+    distribute();
+    if (sortNow)
     {
         sort();
     }
