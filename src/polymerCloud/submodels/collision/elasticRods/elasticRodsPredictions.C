@@ -380,7 +380,10 @@ void Foam::polymer::collisionModels::elasticRods::growBoxes
     for (const label rod : rodsToPredict_)
     {
         const boundBox box(sweep(rod, t, dt));
-        const bool grown = grid_.grow(rod, box, growMargin(rod, t, dt));
+        // The margin (two square roots) only for a box that grows
+        const bool grown =
+            !grid_.holds(rod, box)
+         && grid_.grow(rod, box, growMargin(rod, t, dt));
         if (edges && !(rodDrift(rod) < edgeBudget_[rod]))
         {
             predictEdges(rod, box, t, dt);
