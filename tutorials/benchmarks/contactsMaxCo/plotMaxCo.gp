@@ -3,9 +3,12 @@
 # scenes. A run that stopped (a chain's constraint failed in every
 # sub-step) is ringed at the error it had reached; it has no cost point.
 # The scenes are drawn slightly apart in maxCo so that equal values show.
-set terminal pngcairo size 1300,560 font ",11"
+# stamp (gnuplot -e "stamp='...'"): the data's command and when its runs
+# finished, under the title.
+if (!exists("stamp")) stamp = "data/maxCo.dat: command and date not given"
+set terminal pngcairo size 1300,580 font ",11"
 set output "maxCo.png"
-set multiplot layout 1,2 title "Contacts in flowing devices: the paper's treatment (dumbbell impulses after the constraint, newton) against the default\n(impulses through the chains' rods, rods meeting wall edges, re-projected with contact constraints, rigid impact zones last, exactRods); ringed: the run stopped"
+set multiplot layout 1,2 title "Contacts in flowing devices: the paper's treatment (dumbbell impulses after the constraint, newton) against the default\n(impulses through the chains' rods, rods meeting wall edges, re-projected with contact constraints, rigid impact zones last, exactRods); ringed: the run stopped\n{/*0.9 ".stamp."}"
 set logscale x 2
 set xrange [0.2:2.5]
 set xtics ("0.25" 0.25, "0.5" 0.5, "1" 1, "2" 2)
