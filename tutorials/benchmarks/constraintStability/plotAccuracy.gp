@@ -2,10 +2,12 @@
 # one curve per method (the points are deltaT = 0.01, 0.02, 0.04, 0.08,
 # 0.16 from right to left, labelled for newton and SHAKE end), error bars
 # one standard error; the dashed line is about one standard error (errors
-# below it are noise).
+# below it are noise). stamp (summarise): the command and the time of the
+# runs, under the title.
+if (!exists("stamp")) stamp = "command and date not given (summarise gives them)"
 set terminal pngcairo size 1200,560 font "DejaVu Sans,12"
 set output "accuracyCost.png"
-set multiplot layout 1,2 title "Accuracy against cost: 2000 trimers + 300 chains of 20 beads, a = m = zeta = kT = 1"
+set multiplot layout 1,2 title "Accuracy against cost: 2000 trimers + 300 chains of 20 beads, a = m = zeta = kT = 1\n{/*0.8 ".stamp."}"
 set logscale xy
 set format x "%g"
 set format y "10^{%L}"

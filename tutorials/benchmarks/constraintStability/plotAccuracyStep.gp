@@ -12,10 +12,12 @@
 # (black, (a)-(d)): exactRods with solution { maxNeighbourDisplacement
 # 0.3; }, at the flow's deltaT, which the cloud takes in K polymer steps of
 # deltaT/K (K written by each point; their delta/a about 0.15-0.21, not
-# the top axis's).
+# the top axis's). stamp (summarise): the command and the time of the runs,
+# under the title.
+if (!exists("stamp")) stamp = "command and date not given (summarise gives them)"
 set terminal pngcairo size 1800,1080 font "DejaVu Sans,12"
 set output "accuracyStep.png"
-set multiplot layout 2,3 title "Accuracy against the step: a = m = zeta = kT = 1, failureAction stop; each method up to its first stop, exactRods at every step;\nblack: exactRods with maxNeighbourDisplacement 0.3, at the flow's deltaT taken in K polymer steps of deltaT/K (K by the points)" font ",14"
+set multiplot layout 2,3 title "Accuracy against the step: a = m = zeta = kT = 1, failureAction stop; each method up to its first stop, exactRods at every step;\nblack: exactRods with maxNeighbourDisplacement 0.3, at the flow's deltaT taken in K polymer steps of deltaT/K (K by the points)\n{/*0.75 ".stamp."}" font ",14"
 
 methods = "SHAKE-start SHAKE-end RATTLE newton exactRods newton-subStep exactRods-maxDelta"
 names = "SHAKE\\_start SHAKE\\_end RATTLE newton exactRods newton\\_subStep exactRods,\\ maxNeighbourDisplacement\\ 0.3"

@@ -1,10 +1,12 @@
 # Largest stable time step per method and case (data/largest.dat, written
 # by summarise): one marker per method; bars up to the first unstable step.
 # exactRods, stable at every step tried, has no bar: its marker is the
-# largest step tried.
+# largest step tried. stamp (summarise): the command and the time of the
+# runs, under the title.
+if (!exists("stamp")) stamp = "command and date not given (summarise gives them)"
 set terminal pngcairo size 1300,650 font "DejaVu Sans,12"
 set output "stability.png"
-set title "Largest stable deltaT (markers) and smallest unstable deltaT tried (top of the bar)\nexactOU; failureAction stop; maxIterations 20000 (newton, exactRods 50); exactRods: stable at every step tried (no bar)"
+set title "Largest stable deltaT (markers) and smallest unstable deltaT tried (top of the bar)\nexactOU; failureAction stop; maxIterations 20000 (newton, exactRods 50); exactRods: stable at every step tried (no bar)\n{/*0.8 ".stamp."}"
 set ylabel "deltaT (reduced units; a = kT = 1)"
 set logscale y
 set format y "10^{%L}"
