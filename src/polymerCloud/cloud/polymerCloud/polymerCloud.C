@@ -213,6 +213,7 @@ Foam::polymer::polymerCloud::polymerCloud
         " wall <model>; flow <model>; initialisation <model>; ..."
     );
 
+    checkKeywords(subModels);
     selectModels(subModels);
 
     // In a solved flow, a step's temporary fields (and the cloud's arrays

@@ -236,6 +236,47 @@ void Foam::polymer::polymerCloud::attachModels()
 }
 
 
+void Foam::polymer::polymerCloud::checkKeywords
+(
+    const dictionary& subModels
+) const
+{
+    checkedInput::onlyKeywords
+    (
+        properties_,
+        {"FoamFile", "solution", "chainTypes", "subModels", "cloudFunctions"},
+        "the cloud's properties"
+    );
+
+    wordList known
+    ({
+        "integration", "constraint", "collision", "wall", "flow",
+        "forces", "initialisation", "injection"
+    });
+    for
+    (
+        const wordList& models
+      : {
+            integrationModel::dictionaryConstructorTablePtr_->sortedToc(),
+            constraintModel::dictionaryConstructorTablePtr_->sortedToc(),
+            collisionModel::dictionaryConstructorTablePtr_->sortedToc(),
+            wallModel::dictionaryConstructorTablePtr_->sortedToc(),
+            flowModel::dictionaryConstructorTablePtr_->sortedToc(),
+            forceModel::dictionaryConstructorTablePtr_->sortedToc(),
+            initialisationModel::dictionaryConstructorTablePtr_->sortedToc(),
+            injectionModel::dictionaryConstructorTablePtr_->sortedToc()
+        }
+    )
+    {
+        for (const word& model : models)
+        {
+            known.append(model + "Coeffs");
+        }
+    }
+    checkedInput::onlyKeywords(subModels, known, "the cloud's subModels");
+}
+
+
 void Foam::polymer::polymerCloud::selectModels(const dictionary& subModels)
 {
     flow_ = flowModel::New(subModels, mesh_);

@@ -53,13 +53,19 @@ Foam::autoPtr<Model> Foam::polymer::polymerSubModel::selectNamed
 
     if (!cstrIter.found())
     {
-        FatalIOErrorInLookup
+        FatalIOErrorInFunction(dict)
+            << "Unknown " << keyword << " type " << modelType
+            << " (keyword '" << keyword << "' in " << dict.name() << ")"
+            << nl << "    expected: " << keyword << " <";
+        const wordList names
         (
-            dict,
-            keyword,
-            modelType,
-            *Model::dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
+            Model::dictionaryConstructorTablePtr_->sortedToc()
+        );
+        forAll(names, i)
+        {
+            FatalIOError << (i ? " | " : "") << names[i];
+        }
+        FatalIOError << ">;" << exit(FatalIOError);
     }
 
     autoPtr<Model> model(cstrIter()(std::forward<Args>(args)...));

@@ -57,9 +57,10 @@ Foam::polymer::constraintModels::SHAKE::SHAKE
     ),
     directions_
     (
-        directionTypeNames.getOrDefault
+        checkedInput::enumOrDefault
         (
-            "directions", coeffDict_, directionType::start
+            coeffDict_, "directions", directionTypeNames,
+            directionType::start
         )
     ),
     reference_()

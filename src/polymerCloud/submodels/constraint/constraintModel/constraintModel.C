@@ -39,9 +39,10 @@ Foam::polymer::constraintModel::constraintModel
     countedSubModel<constraintCounters>(type, dict),
     failureAction_
     (
-        failureActionNames.getOrDefault
+        checkedInput::enumOrDefault
         (
-            "failureAction", coeffDict_, failureActionType::subStep
+            coeffDict_, "failureAction", failureActionNames,
+            failureActionType::subStep
         )
     ),
     maxSubSteps_

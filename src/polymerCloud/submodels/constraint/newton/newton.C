@@ -61,9 +61,10 @@ Foam::polymer::constraintModels::newton::newton
     ),
     directions_
     (
-        SHAKE::directionTypeNames.getOrDefault
+        checkedInput::enumOrDefault
         (
-            "directions", coeffDict_, SHAKE::directionType::start
+            coeffDict_, "directions", SHAKE::directionTypeNames,
+            SHAKE::directionType::start
         )
     ),
     reference_(),

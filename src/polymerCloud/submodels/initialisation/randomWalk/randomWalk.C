@@ -369,7 +369,8 @@ Foam::label Foam::polymer::initialisationModels::randomWalk::create
         {
             FatalIOErrorInFunction(chainsDict)
                 << "Chain type '" << type.name() << "' in "
-                << chainsDict.name() << " is a ring" << nl
+                << chainsDict.name() << " is a ring (its keyword 'ring' is"
+                << " true)" << nl
                 << "    expected: open chain types; random walks do not"
                 << " close (use the trefoil or file initialisation)"
                 << exit(FatalIOError);

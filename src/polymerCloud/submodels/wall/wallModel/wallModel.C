@@ -93,8 +93,20 @@ Foam::polymer::wallModel::wallModel
                     << exit(FatalIOError);
             }
 
-            const interactionType kind =
-                interactionTypeNames.get(e.keyword(), *interactionDict);
+            const word kindName
+            (
+                interactionDict->get<word>(e.keyword(), keyType::LITERAL)
+            );
+            if (!interactionTypeNames.found(kindName))
+            {
+                FatalIOErrorInFunction(*interactionDict)
+                    << "Keyword '" << e.keyword() << "' in "
+                    << interactionDict->name() << " is " << kindName << nl
+                    << "    expected: " << e.keyword() << " <"
+                    << interactionTypeNames.sortedToc() << ">;"
+                    << exit(FatalIOError);
+            }
+            const interactionType kind = interactionTypeNames[kindName];
             for (const label patchi : matched)
             {
                 interaction_[patchi] = kind;
