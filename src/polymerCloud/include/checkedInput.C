@@ -12,6 +12,10 @@ License
 
 #include "checkedInput.H"
 
+#include <algorithm>
+#include <cctype>
+#include <vector>
+
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * * //
 
 namespace
@@ -30,6 +34,32 @@ void missing
         << "Missing keyword '" << keyword << "' in " << dict.name() << nl
         << "    expected: " << keyword << ' ' << meaning.c_str() << ';'
         << exit(FatalIOError);
+}
+
+//- Within two single-character edits (insertions, deletions or
+//  substitutions, any case) of each other: a misspelling
+bool nearlyEqual(const Foam::word& a, const Foam::word& b)
+{
+    // Levenshtein's distance, one row at a time
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+    {
+        row[j] = j;
+    }
+    for (std::size_t i = 1; i <= a.size(); ++i)
+    {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+        {
+            const std::size_t above = row[j];
+            const bool same =
+                std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + !same});
+            diagonal = above;
+        }
+    }
+    return row[b.size()] <= 2;
 }
 
 } // End anonymous namespace
@@ -150,6 +180,39 @@ void Foam::polymer::checkedInput::onlyKeywords
                 FatalIOError << ' ' << keyword;
             }
             FatalIOError << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::polymer::checkedInput::noMisspeltKeywords
+(
+    const dictionary& dict,
+    const wordList& known,
+    const string& owner
+)
+{
+    for (const entry& e : dict)
+    {
+        if (known.found(e.keyword()))
+        {
+            continue;
+        }
+        for (const word& keyword : known)
+        {
+            if (nearlyEqual(e.keyword(), keyword))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Keyword '" << e.keyword() << "' in " << dict.name()
+                    << " is not a keyword of " << owner.c_str()
+                    << ": misspelt '" << keyword << "'?" << nl
+                    << "    expected: one of";
+                for (const word& other : known)
+                {
+                    FatalIOError << ' ' << other;
+                }
+                FatalIOError << exit(FatalIOError);
+            }
         }
     }
 }

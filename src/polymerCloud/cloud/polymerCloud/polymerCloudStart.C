@@ -241,7 +241,8 @@ void Foam::polymer::polymerCloud::checkKeywords
     const dictionary& subModels
 ) const
 {
-    checkedInput::onlyKeywords
+    // Other top-level entries may be variables for $-expansion
+    checkedInput::noMisspeltKeywords
     (
         properties_,
         {"FoamFile", "solution", "chainTypes", "subModels", "cloudFunctions"},

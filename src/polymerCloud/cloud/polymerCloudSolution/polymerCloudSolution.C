@@ -26,6 +26,22 @@ Foam::polymer::polymerCloudSolution::contactTreatmentNames
 });
 
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The solution sub-dictionary, or an empty one named after it; not the
+//  properties themselves (optionalSubDict's answer), whose other entries
+//  are no solution keywords
+Foam::dictionary solutionDict(const Foam::dictionary& properties)
+{
+    return properties.subOrEmptyDict("solution", Foam::keyType::LITERAL);
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::polymer::polymerCloudSolution::polymerCloudSolution
@@ -35,14 +51,14 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
 :
     active_
     (
-        properties.optionalSubDict("solution")
+        solutionDict(properties)
        .getOrDefault<bool>("active", true)
     ),
     seed_
     (
         checkedInput::labelAtLeastOrDefault
         (
-            properties.optionalSubDict("solution"), "seed", 1, 0,
+            solutionDict(properties), "seed", 1, 0,
             "<the noise's seed, a whole number>"
         )
     ),
@@ -50,7 +66,7 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
     (
         checkedInput::positiveScalarOrDefault
         (
-            properties.optionalSubDict("solution"),
+            solutionDict(properties),
             "rodLengthCheck",
             1e-6,
             "<relative rod-length mismatch accepted at start>"
@@ -58,13 +74,13 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
     ),
     maxNeighbourDisplacement_
     (
-        properties.optionalSubDict("solution").found
+        solutionDict(properties).found
         (
             "maxNeighbourDisplacement", keyType::LITERAL
         )
       ? checkedInput::positiveScalar
         (
-            properties.optionalSubDict("solution"),
+            solutionDict(properties),
             "maxNeighbourDisplacement",
             "<largest predicted displacement of neighbouring beads in a"
             " polymer step, in rod lengths>"
@@ -75,7 +91,7 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
     (
         checkedInput::labelAtLeastOrDefault
         (
-            properties.optionalSubDict("solution"),
+            solutionDict(properties),
             "maxSubCycles",
             64,
             1,
@@ -86,7 +102,7 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
     (
         checkedInput::enumOrDefault
         (
-            properties.optionalSubDict("solution"),
+            solutionDict(properties),
             "contactTreatment",
             contactTreatmentNames,
             contactTreatmentType::reproject
@@ -96,7 +112,7 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
     (
         checkedInput::labelAtLeastOrDefault
         (
-            properties.optionalSubDict("solution"),
+            solutionDict(properties),
             "maxContactRounds",
             4,
             0,
