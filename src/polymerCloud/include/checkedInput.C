@@ -21,21 +21,6 @@ License
 namespace
 {
 
-void missing
-(
-    const Foam::dictionary& dict,
-    const Foam::word& keyword,
-    const Foam::string& meaning
-)
-{
-    using namespace Foam;
-    using namespace Foam::polymer;
-    FatalIOErrorInFunction(dict)
-        << "Missing keyword '" << keyword << "' in " << dict.name() << nl
-        << "    expected: " << keyword << ' ' << meaning.c_str() << ';'
-        << exit(FatalIOError);
-}
-
 //- Within two single-character edits (insertions, deletions or
 //  substitutions, any case) of each other: a misspelling
 bool nearlyEqual(const Foam::word& a, const Foam::word& b)
@@ -67,6 +52,20 @@ bool nearlyEqual(const Foam::word& a, const Foam::word& b)
 
 // * * * * * * * * * * * * * * * * Functions  * * * * * * * * * * * * * * * //
 
+void Foam::polymer::checkedInput::missing
+(
+    const dictionary& dict,
+    const word& keyword,
+    const string& meaning
+)
+{
+    FatalIOErrorInFunction(dict)
+        << "Missing keyword '" << keyword << "' in " << dict.name() << nl
+        << "    expected: " << keyword << ' ' << meaning.c_str() << ';'
+        << exit(FatalIOError);
+}
+
+
 Foam::scalar Foam::polymer::checkedInput::positiveScalar
 (
     const dictionary& dict,
@@ -76,7 +75,7 @@ Foam::scalar Foam::polymer::checkedInput::positiveScalar
 {
     if (!dict.found(keyword, keyType::LITERAL))
     {
-        missing(dict, keyword, meaning);
+        checkedInput::missing(dict, keyword, meaning);
     }
 
     const scalar value = dict.get<scalar>(keyword, keyType::LITERAL);
@@ -122,7 +121,7 @@ Foam::label Foam::polymer::checkedInput::labelAtLeast
 {
     if (!dict.found(keyword, keyType::LITERAL))
     {
-        missing(dict, keyword, meaning);
+        checkedInput::missing(dict, keyword, meaning);
     }
 
     const label value = dict.get<label>(keyword, keyType::LITERAL);

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "electrophoretic.H"
+#include "checkedInput.H"
 #include "fvm.H"
 #include "fvc.H"
 #include "makePolymerModel.H"
@@ -58,7 +59,13 @@ Foam::polymer::forceModels::electrophoretic::electrophoretic
 )
 :
     forceModel(typeName, dict),
-    charge_(coeffDict_.get<scalar>("charge")),
+    charge_
+    (
+        checkedInput::required<scalar>
+        (
+            coeffDict_, "charge", "<a bead's charge, force per unit field>"
+        )
+    ),
     potential_(potentialIO(mesh), mesh),
     field_
     (
@@ -86,7 +93,19 @@ Foam::polymer::forceModels::electrophoretic::electrophoretic
     // same system from the same start and continues bit for bit
     potential_.primitiveFieldRef() = Zero;
     fvScalarMatrix laplace(fvm::laplacian(potential_));
-    laplace.solve();
+    const solverPerformance solved(laplace.solve());
+    if (!solved.converged())
+    {
+        FatalIOErrorInFunction(mesh.solverDict(potential_.name()))
+            << "The potential " << potential_.name() << " did not converge:"
+            << " residual " << solved.finalResidual() << " after "
+            << solved.nIterations() << " iterations (solver "
+            << solved.solverName() << ")" << nl
+            << "    expected: solvers { " << potential_.name()
+            << " { tolerance <t>; maxIter <n>; } } in fvSolution, with"
+            << " maxIter enough to reach the tolerance"
+            << exit(FatalIOError);
+    }
 
     field_ = -fvc::grad(potential_);
 

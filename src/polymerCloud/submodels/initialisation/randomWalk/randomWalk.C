@@ -35,7 +35,19 @@ Foam::polymer::initialisationModels::randomWalk::randomWalk
 )
 :
     initialisationModel(typeName, dict, mesh),
-    box_(coeffDict_.get<point>("min"), coeffDict_.get<point>("max")),
+    box_
+    (
+        checkedInput::required<point>
+        (
+            coeffDict_, "min",
+            "(<x> <y> <z>), the lower corner of the first beads' box"
+        ),
+        checkedInput::required<point>
+        (
+            coeffDict_, "max",
+            "(<x> <y> <z>), the upper corner of the first beads' box"
+        )
+    ),
     insideMesh_
     (
         coeffDict_.getOrDefault<bool>

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "trefoil.H"
+#include "checkedInput.H"
 #include "transform.H"
 #include "mathematicalConstants.H"
 #include "makePolymerModel.H"
@@ -138,7 +139,13 @@ Foam::polymer::initialisationModels::trefoil::trefoil
 )
 :
     initialisationModel(typeName, dict, mesh),
-    chainTypeName_(coeffDict_.get<word>("chainType")),
+    chainTypeName_
+    (
+        checkedInput::required<word>
+        (
+            coeffDict_, "chainType", "<a chain type of chainTypes>"
+        )
+    ),
     centre_(coeffDict_.getOrDefault<point>("centre", Zero)),
     axis_(coeffDict_.getOrDefault<vector>("axis", vector(0, 0, 1)))
 {

@@ -31,8 +31,24 @@ Foam::polymer::injectionModels::boxInjection::boxInjection
 )
 :
     injectionModel(typeName, dict, mesh),
-    chainTypeName_(coeffDict_.get<word>("chainType")),
-    box_(coeffDict_.get<point>("min"), coeffDict_.get<point>("max")),
+    chainTypeName_
+    (
+        checkedInput::required<word>
+        (
+            coeffDict_, "chainType", "<a chain type of chainTypes>"
+        )
+    ),
+    box_
+    (
+        checkedInput::required<point>
+        (
+            coeffDict_, "min", "(<x> <y> <z>), the box's lower corner"
+        ),
+        checkedInput::required<point>
+        (
+            coeffDict_, "max", "(<x> <y> <z>), the box's upper corner"
+        )
+    ),
     rate_
     (
         checkedInput::positiveScalar
