@@ -138,6 +138,7 @@ void Foam::polymer::polymerCloud::setThermalVelocities(const label firstChain)
     // the trefoil
     const constraintModels::newton projection(dictionary::null);
 
+    label nFailed = 0;
     for (label c = firstChain; c < chains_.nChains(); ++c)
     {
         const chainType& type = chains_.type(c);
@@ -158,11 +159,28 @@ void Foam::polymer::polymerCloud::setThermalVelocities(const label firstChain)
             v[i] = thermalSpeed*vector(xi[0], xi[1], xi[2]);
         }
 
-        if (constraint_->constrainsVelocities())
+        scalar residual = 0;
+        if
+        (
+            constraint_->constrainsVelocities()
+         && projection.correctChainVelocities(chains_, c, residual) < 0
+         && nFailed++ == 0
+        )
         {
-            scalar residual;
-            projection.correctChainVelocities(chains_, c, residual);
+            WarningInFunction
+                << "The starting velocities of chain " << chains_.globalId(c)
+                << " (" << type.name() << ") at time "
+                << mesh_.time().timeName() << " are off its rods by "
+                << residual << " (relative), above the projection's"
+                << " tolerance" << endl;
         }
+    }
+    if (nFailed > 1)
+    {
+        WarningInFunction
+            << nFailed << " chains' starting velocities at time "
+            << mesh_.time().timeName() << " are off their rods above the"
+            << " projection's tolerance" << endl;
     }
 }
 
