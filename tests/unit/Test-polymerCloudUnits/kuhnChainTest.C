@@ -125,6 +125,12 @@ TEST(kuhnChain, BadEntriesStop)
         "basePairs 1000; kuhnLengthsPerRod 0.5; frictionPerLength 1; kT 1;",
         // misspelt optional keyword
         "basePairs 1000; kuhnLengthPerRod 2; frictionPerLength 1; kT 1;",
+        // the reduced form with a keyword of the contour form, which it
+        // would ignore
+        "nBeads 10; rodLength 1; beadMass 1; friction 1; kT 1;"
+        " viscosity 1e-3;",
+        "nBeads 10; rodLength 1; beadMass 1; friction 1; kT 1;"
+        " kuhnLengthsPerRod 2;",
         // non-physical values
         "basePairs 0; frictionPerLength 1; kT 1;",
         "basePairs 1000; beadRadius -1e-8; viscosity 1e-3; kT 1;",

@@ -80,6 +80,29 @@ Foam::polymer::chainType::chainType(const word& name, const dictionary& dict)
     }
     else
     {
+        // The contour form's keywords mean nothing without its contour
+        for
+        (
+            const word contour
+          : {
+                "kuhnLength", "massPerLength", "kuhnLengthsPerRod",
+                "beadRadius", "viscosity", "frictionPerLength"
+            }
+        )
+        {
+            if (dict.found(contour, keyType::LITERAL))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Chain type '" << name_ << "' in " << dict.name()
+                    << " is given by nBeads, rodLength, beadMass and"
+                    << " friction, and also has '" << contour << "', a"
+                    << " keyword of the contour form" << nl
+                    << "    expected: either basePairs or contourLength with"
+                    << " kuhnLength, or nBeads, rodLength, beadMass and"
+                    << " friction"
+                    << exit(FatalIOError);
+            }
+        }
         nBeads_ =
             checkedInput::labelAtLeast(dict, "nBeads", 2, "<beads per chain>");
         rodLength_ =
