@@ -12,6 +12,7 @@ License
 
 #include "polymerCloudSource.H"
 #include "fvMatrices.H"
+#include "field.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -47,6 +48,19 @@ Foam::fv::polymerCloudSource::polymerCloudSource
             << "Keyword 'fields' of fvOption " << name << " in "
             << coeffs_.name() << " is " << fieldNames_ << nl
             << "    expected: fields (<the momentum equation's velocity>);"
+            << exit(FatalIOError);
+    }
+    // The source acts on the velocity the chains sample: on another field
+    // it would never be applied, and the chains would never move
+    const auto* field =
+        isA<polymer::flowModels::field>(polymers_.flow());
+    if (field && fieldNames_[0] != field->UName())
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Keyword 'fields' of fvOption " << name << " in "
+            << coeffs_.name() << " is " << fieldNames_ << ", but the chains"
+            << " sample " << field->UName() << " (fieldCoeffs U)" << nl
+            << "    expected: fields (" << field->UName() << ");"
             << exit(FatalIOError);
     }
     applied_.setSize(fieldNames_.size(), false);
