@@ -395,6 +395,18 @@ int main(int argc, char *argv[])
         maxRodError = max(maxRodError, chains.maxRodLengthError());
         for (label c = 0; c < nc; ++c)
         {
+            // A chain's samples in the block of its id: the cloud keeps
+            // its chains in the order of their cells, which changes as
+            // they move, so a chain's index is not the same chain's
+            // from sample to sample (blocks of mixed chains would
+            // understate the standard errors)
+            const label block = chains.globalId(c);
+            if (block < 0 || block >= nc)
+            {
+                FatalErrorInFunction
+                    << "Chain id " << block << " outside 0.." << nc - 1
+                    << exit(FatalError);
+            }
             const label s = chains.start(c);
             auto binOf = [&](const label i)
             {
@@ -406,16 +418,16 @@ int main(int argc, char *argv[])
             const label bj = binOf(s + N - 1 - kInner);
             for (label b = 0; b < nBins; ++b)
             {
-                endBins[b].add(c, 0.5*((b == b0) + (b == b1)));
-                innerBins[b].add(c, 0.5*((b == bi) + (b == bj)));
+                endBins[b].add(block, 0.5*((b == b0) + (b == b1)));
+                innerBins[b].add(block, 0.5*((b == bi) + (b == bj)));
             }
-            rg2.add(c, chains.radiusOfGyrationSqr(c));
+            rg2.add(block, chains.radiusOfGyrationSqr(c));
 
             auto inCentre = [&](const label i)
             {
                 return mag(x[i].z() - z0 - 0.5*h) < centreHalf ? 1.0 : 0.0;
             };
-            centre.add(c, 0.5*(inCentre(s) + inCentre(s + N - 1)));
+            centre.add(block, 0.5*(inCentre(s) + inCentre(s + N - 1)));
         }
     }
 
