@@ -35,8 +35,8 @@ do for [s in "trefoil extension"] {
             with points ls i pt open(i) title (i == 1 ? "stopped runs (open)" : "")
 }
 
-# (b) at deltaT = 0.01: iterations against Ree/L along the run, L = 99 a
-set title "(b) extension, deltaT = 0.01: against the stretch"
+# (c) extension at deltaT = 0.01: iterations against Ree/L along the run, L = 99 a
+set title "(c) extension, deltaT = 0.01: against the stretch"
 set xlabel "Ree / L (end-to-end distance over contour length)"
 set ylabel "iterations per solve, every 10 steps"
 set xrange [0.1:1]
