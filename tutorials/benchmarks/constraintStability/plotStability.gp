@@ -14,7 +14,7 @@ set yrange [0.004:30]
 set xrange [-0.6:6.6]
 set grid ytics lc rgb "#e0e0e0"
 set key inside left top Left reverse box opaque
-set bmargin 7
+set bmargin 5
 set xtics ("(a) trefoil\nN=400, T=10\nzeta=10, m=1" 0, "(b) extension\nN=100, Wi=34, T=60\nzeta=10, m=1" 1, \
            "(c) quiescent\nN=100, T=20\nzeta=10, m=1" 2, "(c)\nzeta=1\nm=1" 3, \
            "(c)\nzeta=0.1\nm=1" 4, "(c)\nzeta=10\nm=10" 5, \
