@@ -106,6 +106,10 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     rodClosePairs_(),
     pairListed_(),
     pairStamp_(),
+    pairLazyBudget_(),
+    pairLazyTime_(),
+    pairSerial_(),
+    pairLazyQueued_(),
     wallBudget_(),
     edgeBudget_(),
     grid_(),
@@ -301,6 +305,15 @@ void Foam::polymer::collisionModels::elasticRods::correct
         if (e.deferred >= 0)
         {
             continuePrediction(e, deltaT);
+            continue;
+        }
+        if (e.revalidate >= 0)
+        {
+            // Unless predicted since
+            if (e.revalidate == pairSerial_[e.pair])
+            {
+                predict(e.pair, e.time, deltaT);
+            }
             continue;
         }
 

@@ -168,6 +168,9 @@ void Foam::polymer::collisionModels::elasticRods::predict
     moved[2] = rest*vb0;
     moved[3] = rest*vb1;
     sizePairData();
+    ++pairSerial_[pairi];
+    pairLazyBudget_[pairi] = -GREAT;
+    pairLazyQueued_[pairi] = 0;
     scalar clearance = 0;
     if (sweptApart(x, moved, clearance))
     {
@@ -221,6 +224,20 @@ void Foam::polymer::collisionModels::elasticRods::predict
             deferredBrackets_.push_back(next);
         }
         queue_.push(e);
+
+        // No crossing before half the time to it while the beads' paths
+        // drift less than V's distance from zero over that half allows:
+        // a change of course within that is predicted then, not now
+        const scalar lazy = 0.5*s;
+        const scalar keep =
+            lazy > 0
+          ? pair.signKeepingDrift(lazy, pairContacts::bandMargin(pair))
+          : 0;
+        if (keep > 0)
+        {
+            pairLazyBudget_[pairi] = keep + pairDrift(pairi);
+            pairLazyTime_[pairi] = t + lazy;
+        }
     }
     else
     {
@@ -327,6 +344,10 @@ void Foam::polymer::collisionModels::elasticRods::resetPredictions
     pairBudget_.assign(nPairs, -GREAT);
     pairListed_.assign(nPairs, 0);
     pairStamp_.assign(nPairs, 0);
+    pairLazyBudget_.assign(nPairs, -GREAT);
+    pairLazyTime_.assign(nPairs, 0);
+    pairSerial_.assign(nPairs, 0);
+    pairLazyQueued_.assign(nPairs, 0);
     rodLimit_.assign(rods_.size(), GREAT);
     rodClosePairs_.resize(rods_.size());
     for (std::vector<label>& close : rodClosePairs_)
@@ -425,7 +446,10 @@ void Foam::polymer::collisionModels::elasticRods::lookAtPairs
         )
         {
             pairStamp_[pairi] = repredictions_;
-            predict(pairi, t, dt);
+            if (!predictLater(pairi, t))
+            {
+                predict(pairi, t, dt);
+            }
         }
         limit = min(limit, limitDrift(pairi, rod));
     }
@@ -488,6 +512,40 @@ void Foam::polymer::collisionModels::elasticRods::listClosePair
 }
 
 
+bool Foam::polymer::collisionModels::elasticRods::predictLater
+(
+    const label pairi,
+    const scalar t
+)
+{
+    if
+    (
+        !(pairDrift(pairi) < pairLazyBudget_[pairi])
+     || !(t < pairLazyTime_[pairi])
+    )
+    {
+        return false;
+    }
+    if (!pairLazyQueued_[pairi])
+    {
+        pairLazyQueued_[pairi] = 1;
+        event e;
+        e.time = pairLazyTime_[pairi];
+        e.pair = pairi;
+        e.from = t;
+        e.offset = e.time - t;
+        e.normal = Zero;
+        e.patch = -1;
+        e.side = 0;
+        e.atContact = false;
+        e.revalidate = pairSerial_[pairi];
+        e.beads = FixedList<label, 4>({-1, -1, -1, -1});
+        queue_.push(e);
+    }
+    return true;
+}
+
+
 void Foam::polymer::collisionModels::elasticRods::predictClosePairs
 (
     const label rod,
@@ -509,7 +567,10 @@ void Foam::polymer::collisionModels::elasticRods::predictClosePairs
         if (pairStamp_[pairi] != repredictions_)
         {
             pairStamp_[pairi] = repredictions_;
-            predict(pairi, t, dt);
+            if (!predictLater(pairi, t))
+            {
+                predict(pairi, t, dt);
+            }
         }
         ++k;
     }
