@@ -47,6 +47,28 @@ bool nearlyEqual(const Foam::word& a, const Foam::word& b)
     return row[b.size()] <= 2;
 }
 
+//- Stop for a keyword that is not one of the known ones, saying why
+void notAKeyword
+(
+    const Foam::dictionary& dict,
+    const Foam::word& keyword,
+    const Foam::wordList& known,
+    const Foam::string& owner,
+    const Foam::string& why
+)
+{
+    using namespace Foam;
+    FatalIOErrorInFunction(dict)
+        << "Keyword '" << keyword << "' in " << dict.name()
+        << " is not a keyword of " << owner.c_str() << ": " << why.c_str()
+        << nl << "    expected: one of";
+    for (const word& other : known)
+    {
+        FatalIOError << ' ' << other;
+    }
+    FatalIOError << exit(FatalIOError);
+}
+
 } // End anonymous namespace
 
 
@@ -169,16 +191,11 @@ void Foam::polymer::checkedInput::onlyKeywords
     {
         if (!known.found(e.keyword()))
         {
-            FatalIOErrorInFunction(dict)
-                << "Keyword '" << e.keyword() << "' in " << dict.name()
-                << " is not a keyword of " << owner.c_str()
-                << ": misspelt, or meant for another dictionary" << nl
-                << "    expected: one of";
-            for (const word& keyword : known)
-            {
-                FatalIOError << ' ' << keyword;
-            }
-            FatalIOError << exit(FatalIOError);
+            notAKeyword
+            (
+                dict, e.keyword(), known, owner,
+                "misspelt, or meant for another dictionary"
+            );
         }
     }
 }
@@ -201,16 +218,11 @@ void Foam::polymer::checkedInput::noMisspeltKeywords
         {
             if (nearlyEqual(e.keyword(), keyword))
             {
-                FatalIOErrorInFunction(dict)
-                    << "Keyword '" << e.keyword() << "' in " << dict.name()
-                    << " is not a keyword of " << owner.c_str()
-                    << ": misspelt '" << keyword << "'?" << nl
-                    << "    expected: one of";
-                for (const word& other : known)
-                {
-                    FatalIOError << ' ' << other;
-                }
-                FatalIOError << exit(FatalIOError);
+                notAKeyword
+                (
+                    dict, e.keyword(), known, owner,
+                    "misspelt '" + keyword + "'?"
+                );
             }
         }
     }

@@ -289,7 +289,11 @@ void Foam::polymer::polymerCloud::checkKeywords
     {
         for (const word& model : models)
         {
-            known.append(model + "Coeffs");
+            // Several families have a model 'none'
+            if (!known.found(model + "Coeffs"))
+            {
+                known.append(model + "Coeffs");
+            }
         }
     }
     checkedInput::onlyKeywords(subModels, known, "the cloud's subModels");

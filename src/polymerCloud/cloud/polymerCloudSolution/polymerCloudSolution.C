@@ -26,39 +26,20 @@ Foam::polymer::polymerCloudSolution::contactTreatmentNames
 });
 
 
-// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- The solution sub-dictionary, or an empty one named after it; not the
-//  properties themselves (optionalSubDict's answer), whose other entries
-//  are no solution keywords
-Foam::dictionary solutionDict(const Foam::dictionary& properties)
-{
-    return properties.subOrEmptyDict("solution", Foam::keyType::LITERAL);
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::polymer::polymerCloudSolution::polymerCloudSolution
 (
-    const dictionary& properties
+    const dictionary& solution,
+    const Foam::zero
 )
 :
-    active_
-    (
-        solutionDict(properties)
-       .getOrDefault<bool>("active", true)
-    ),
+    active_(solution.getOrDefault<bool>("active", true)),
     seed_
     (
         checkedInput::labelAtLeastOrDefault
         (
-            solutionDict(properties), "seed", 1, 0,
+            solution, "seed", 1, 0,
             "<the noise's seed, a whole number>"
         )
     ),
@@ -66,7 +47,7 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
     (
         checkedInput::positiveScalarOrDefault
         (
-            solutionDict(properties),
+            solution,
             "rodLengthCheck",
             1e-6,
             "<relative rod-length mismatch accepted at start>"
@@ -74,13 +55,10 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
     ),
     maxNeighbourDisplacement_
     (
-        solutionDict(properties).found
-        (
-            "maxNeighbourDisplacement", keyType::LITERAL
-        )
+        solution.found("maxNeighbourDisplacement", keyType::LITERAL)
       ? checkedInput::positiveScalar
         (
-            solutionDict(properties),
+            solution,
             "maxNeighbourDisplacement",
             "<largest predicted displacement of neighbouring beads in a"
             " polymer step, in rod lengths>"
@@ -91,7 +69,7 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
     (
         checkedInput::labelAtLeastOrDefault
         (
-            solutionDict(properties),
+            solution,
             "maxSubCycles",
             64,
             1,
@@ -102,7 +80,7 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
     (
         checkedInput::enumOrDefault
         (
-            solutionDict(properties),
+            solution,
             "contactTreatment",
             contactTreatmentNames,
             contactTreatmentType::reproject
@@ -112,7 +90,7 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
     (
         checkedInput::labelAtLeastOrDefault
         (
-            solutionDict(properties),
+            solution,
             "maxContactRounds",
             4,
             0,
@@ -121,20 +99,33 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
         )
     )
 {
-    if (properties.isDict("solution"))
-    {
-        checkedInput::onlyKeywords
-        (
-            properties.subDict("solution"),
-            {
-                "active", "seed", "rodLengthCheck",
-                "maxNeighbourDisplacement", "maxSubCycles",
-                "contactTreatment", "maxContactRounds"
-            },
-            "the cloud's solution"
-        );
-    }
+    checkedInput::onlyKeywords
+    (
+        solution,
+        {
+            "active", "seed", "rodLengthCheck",
+            "maxNeighbourDisplacement", "maxSubCycles",
+            "contactTreatment", "maxContactRounds"
+        },
+        "the cloud's solution"
+    );
 }
+
+
+Foam::polymer::polymerCloudSolution::polymerCloudSolution
+(
+    const dictionary& properties
+)
+:
+    // The solution dictionary or an empty one, not the properties
+    // themselves (optionalSubDict's answer), whose other entries are no
+    // solution keywords
+    polymerCloudSolution
+    (
+        properties.subOrEmptyDict("solution", keyType::LITERAL),
+        Zero
+    )
+{}
 
 
 // ************************************************************************* //
