@@ -16,6 +16,10 @@ License
 #include "clockTime.H"
 #include "volPointInterpolation.H"
 
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
@@ -97,6 +101,33 @@ Foam::label Foam::polymer::beadSampler::orderByCell
     labelList& order
 )
 {
+    // A counting sort costs a pass over the mesh's cells, a comparison
+    // sort about n log2(n) comparisons of a few nanoseconds each: a few
+    // beads in a large mesh (a dilute scene, a trap array the chains are
+    // leaving) take the comparison sort, whose stable order, tets in no
+    // cell (-1) first, is the counting sort's
+    const label nTets = tets.size();
+    if (4*nTets*std::log2(scalar(nTets + 1)) < mesh_.nCells())
+    {
+        order.setSize(nTets);
+        std::iota(order.begin(), order.end(), label(0));
+        std::stable_sort
+        (
+            order.begin(),
+            order.end(),
+            [&tets](const label a, const label b)
+            {
+                return tets[a].cell() < tets[b].cell();
+            }
+        );
+        return std::count_if
+        (
+            tets.begin(),
+            tets.end(),
+            [](const tetIndices& tet) { return tet.cell() < 0; }
+        );
+    }
+
     // Slot 0 for the tets in no cell here, slot c + 1 for cell c
     cellCounts_.setSize(mesh_.nCells() + 2);
     cellCounts_ = 0;
@@ -109,7 +140,7 @@ Foam::label Foam::polymer::beadSampler::orderByCell
         cellCounts_[slot] += cellCounts_[slot - 1];
     }
 
-    order.setSize(tets.size());
+    order.setSize(nTets);
     forAll(tets, i)
     {
         order[cellCounts_[tets[i].cell() + 1]++] = i;
