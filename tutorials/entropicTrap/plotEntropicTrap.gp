@@ -47,12 +47,12 @@ colour(i) = word("#2171b5 #238b45 #d94801", i + 1)
 label(i) = word("N=10 N=30 N=90", i + 1)
 
 set multiplot layout 4,1 title \
-    "Chains driven through an entropic trap array (side view x-z in rod lengths; inlet left, outlet right; 60, 60 and 15 chains of 10, 30 and 90 beads)\n " \
+    "Uncrossable chains driven through an entropic trap array (side view x-z in rod lengths; inlet left, outlet right)\nthe first of 15 batches: 4, 4 and 1 chains of 10, 30 and 90 beads\n " \
     font ",16"
 do for [k=1:ARGC] {
     # the time in the empty corner above the last wells
     set label 1 sprintf("t = %s", ARGV[k]) at 45.5, 10.5 right font ",16"
-    if (k == 1) { set key at screen 0.5, screen 0.968 center horizontal } \
+    if (k == 1) { set key at screen 0.5, screen 0.958 center horizontal } \
     else { unset key }
 
     plot $walls using 1:2 with lines lw 3 lc rgb "black" notitle, \
