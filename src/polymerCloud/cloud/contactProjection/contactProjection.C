@@ -111,6 +111,17 @@ Foam::polymer::contactProjection::edgeMeetings
 
             // The rod's path at its image inside the mesh
             const vector shift = wall.imageShift(0.5*(from[i] + from[j]));
+            // A rod whose path stays farther from every edge than its
+            // beads move (no point of it moves more) meets none: no
+            // look-up in the edges' tree (most rods of a device)
+            if
+            (
+                wall.rodEdgeClearance(from[i], from[j], shift)
+              > max(mag(x[i] - from[i]), mag(x[j] - from[j]))
+            )
+            {
+                continue;
+            }
             boundBox box(from[i]);
             box.add(from[j]);
             box.add(x[i]);

@@ -52,17 +52,11 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
     const vector shift = wall_->imageShift(0.5*(p0 + p1));
 
     // A rod whose path stays farther from every edge meets none, and
-    // needs no look-up in the edges' tree: a point of the rod is farther
-    // from the edges than the beads' clearances less its distances from
-    // the beads, so at least (c0 + c1 - |p1 - p0|)/2, and strays from
-    // there by at most its beads' larger motion over the rest
+    // needs no look-up in the edges' tree: a point of the rod strays from
+    // the rod's clearance by at most its beads' larger motion over the
+    // rest
     const scalar clearance =
-        0.5
-       *(
-            wall_->edgeClearance(p0 + shift)
-          + wall_->edgeClearance(p1 + shift)
-          - mag(p1 - p0)
-        )
+        wall_->rodEdgeClearance(p0, p1, shift)
       - rest*max(mag(velocity_[a0]), mag(velocity_[a1]));
     if (clearance > 0)
     {
