@@ -3,7 +3,7 @@ Description
     The broad phase of the topology audit (boxGrid): for 2000 random boxes
     packed along a long, thin region and random query boxes, inside and
     beyond the grid, every box that overlaps the query is visited, and no
-    box twice.
+    box twice; so are boxes that only touch a query, far from the origin.
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
@@ -52,6 +52,33 @@ TEST(boxGrid, VisitsEveryOverlappingBoxOnce)
         }
     }
     EXPECT_GT(overlaps, 1000);
+}
+
+
+TEST(boxGrid, VisitsBoxesThatOnlyTouch)
+{
+    // Boxes of the widest span at random places far from the origin, each
+    // asked about from a query that touches its upper corner only: the
+    // grid holds a box by its lower corner, a span below the query's, in
+    // a cell at random place across the cells' faces
+    std::mt19937_64 engine(5);
+    std::uniform_real_distribution<scalar> u(0, 1);
+    const point origin(1e3, -1e3, 1e3);
+    const vector span(0.8, 0.8, 0.8);
+    List<boundBox> boxes(2000);
+    for (boundBox& box : boxes)
+    {
+        const point p(origin + vector(40*u(engine), 4*u(engine), u(engine)));
+        box = boundBox(p, p + span);
+    }
+    const boxGrid grid(boxes);
+    forAll(boxes, q)
+    {
+        const boundBox query(boxes[q].max(), boxes[q].max() + 0.3*span);
+        bool met = false;
+        grid.forNear(query, [&](const label boxi) { met = met || boxi == q; });
+        ASSERT_TRUE(met) << "box " << q;
+    }
 }
 
 
