@@ -98,18 +98,36 @@ Foam::polymer::beadSampler::beadSampler(const fvMesh& mesh)
 Foam::label Foam::polymer::beadSampler::orderByCell
 (
     const UList<tetIndices>& tets,
-    labelList& order
+    labelList& order,
+    const bool byCell
 )
 {
+    // Beads whose mesh data stay in the cache: their own order, the tets
+    // in no cell first (a stable partition, no sort)
+    const label nTets = tets.size();
+    order.setSize(nTets);
+    if (!byCell)
+    {
+        label nNone = 0;
+        forAll(tets, i)
+        {
+            nNone += (tets[i].cell() < 0);
+        }
+        label none = 0, some = nNone;
+        forAll(tets, i)
+        {
+            order[tets[i].cell() < 0 ? none++ : some++] = i;
+        }
+        return nNone;
+    }
+
     // A counting sort costs a pass over the mesh's cells, a comparison
     // sort about n log2(n) comparisons of a few nanoseconds each: a few
     // beads in a large mesh (a dilute scene, a trap array the chains are
     // leaving) take the comparison sort, whose stable order, tets in no
     // cell (-1) first, is the counting sort's
-    const label nTets = tets.size();
     if (4*nTets*std::log2(scalar(nTets + 1)) < mesh_.nCells())
     {
-        order.setSize(nTets);
         std::iota(order.begin(), order.end(), label(0));
         std::stable_sort
         (
@@ -140,7 +158,6 @@ Foam::label Foam::polymer::beadSampler::orderByCell
         cellCounts_[slot] += cellCounts_[slot - 1];
     }
 
-    order.setSize(nTets);
     forAll(tets, i)
     {
         order[cellCounts_[tets[i].cell() + 1]++] = i;
@@ -151,14 +168,21 @@ Foam::label Foam::polymer::beadSampler::orderByCell
 }
 
 
-bool Foam::polymer::beadSampler::prefetches() const
+bool Foam::polymer::beadSampler::missesCache(const label nBeads)
 {
     // A bead's search reads about a kilobyte of mesh data (its cell's
     // faces, points and geometry). The data of fewer beads than this fit
     // in a processor's cache and stay there from step to step, and asking
-    // for them ahead only adds work; those of many more wait for memory
+    // for them ahead, or sorting the beads by cell, only adds work; those
+    // of many more wait for memory
     const label cachedBeads = 16384;
-    return cellOrder_.size() > cachedBeads;
+    return nBeads > cachedBeads;
+}
+
+
+bool Foam::polymer::beadSampler::prefetches() const
+{
+    return missesCache(cellOrder_.size());
 }
 
 
@@ -358,7 +382,7 @@ void Foam::polymer::beadSampler::findLeavers
             leaverPoints_.append(p);
         }
     }
-    orderByCell(leaverTets_, leaverOrder_);
+    orderByCell(leaverTets_, leaverOrder_, prefetches());
 }
 
 
@@ -418,7 +442,8 @@ void Foam::polymer::beadSampler::locateHere
     // or in none: no search here. The untracked beads first (they start
     // from their neighbours' tets as the last locate left them), then
     // those that left their tet
-    const label nUntracked = orderByCell(hostTet, cellOrder_);
+    const label nUntracked =
+        orderByCell(hostTet, cellOrder_, missesCache(hostTet.size()));
     locateUntracked(chains, nUntracked, hostTet, transform, triangle);
     findLeavers(chains.positions(), hostTet, transform);
     searchLeavers(hostTet, transform, triangle);
