@@ -421,6 +421,13 @@ void Foam::polymer::boundaryFaces::buildTree()
         radii_[facei] = radius;
     }
 
+    List<boundBox> faceBoxes(faces_.size());
+    forAll(faces_, facei)
+    {
+        faceBoxes[facei] = boundBox(points_, faces_[facei], false);
+    }
+    faceGrid_.reset(new boxGrid(faceBoxes));
+
     const treeBoundBox bb(treeBounds(points_));
     tree_.reset
     (
@@ -454,7 +461,8 @@ Foam::polymer::boundaryFaces::boundaryFaces
     warps_(),
     radii_(),
     facePatch_(),
-    tree_()
+    tree_(),
+    faceGrid_()
 {
     addOwnFaces(mesh);
     addHalo(mesh, reach);
@@ -505,22 +513,28 @@ Foam::scalar Foam::polymer::boundaryFaces::pathClearance
 ) const
 {
     // A face nearer than reach to the segment has a point in its box
-    // widened by reach, so its bounds overlap that and the tree lists it
+    // widened by reach, so its bounds overlap that, and the octree's test
+    // of the face against the box (as its findBox would list it) passes
     if (!tree_.valid() || !(reach > 0))
     {
         return max(reach, 0);
     }
     const vector half(vector::uniform(reach));
+    const treeBoundBox box(min(p0, p1) - half, max(p0, p1) + half);
+    const treeFaces& shapes = tree_->shapes();
     const faceBounds bounds{centres_, normals_, warps_, radii_};
     scalar lowest = reach;
-    for
+    faceGrid_->forNear
     (
-        const label facei
-      : tree_->findBox(treeBoundBox(min(p0, p1) - half, max(p0, p1) + half))
-    )
-    {
-        lowest = min(lowest, bounds.segmentBound(facei, p0, p1));
-    }
+        box,
+        [&](const label facei)
+        {
+            if (shapes.overlaps(facei, box))
+            {
+                lowest = min(lowest, bounds.segmentBound(facei, p0, p1));
+            }
+        }
+    );
     return max(lowest, 0);
 }
 
