@@ -400,6 +400,11 @@ Foam::polymer::rodCrossingAudit::check
         }
     }
 
+    // Rods every pair to check has one of: a rod to check, or without
+    // those a rod that moves (two rods that stay put cannot cross; where
+    // few chains were re-projected most rods stay put)
+    const boolList& origin = rodsToCheck.empty() ? moves : rodsToCheck;
+
     DynamicList<crossing> found;
     const auto checkIfNear = [&](const label a, const label b)
     {
@@ -407,11 +412,7 @@ Foam::polymer::rodCrossingAudit::check
         const labelPair& rb = rods_[b];
         if
         (
-            (moves[a] || moves[b])
-         && ra.first() != rb.first() && ra.first() != rb.second()
-         && ra.second() != rb.first() && ra.second() != rb.second()
-         && boxes[a].overlaps(boxes[b])
-         && !rodsFartherThan
+            !rodsFartherThan
             (
                 path[0][ra.first()], path[0][ra.second()],
                 path[0][rb.first()], path[0][rb.second()],
@@ -423,34 +424,49 @@ Foam::polymer::rodCrossingAudit::check
         }
     };
 
-    // Candidates from a grid of the boxes, looked up from the rods every
-    // pair to check has one of: a rod to check, or without those a rod
-    // that moves (two rods that stay put cannot cross; where few chains
-    // were re-projected most rods stay put). A pair of two such rods is
-    // taken from its first
-    const auto isOrigin = [&](const label rodi)
-    {
-        return rodsToCheck.empty() ? moves[rodi] : rodsToCheck[rodi];
-    };
+    // Candidates from a grid of the boxes, looked up from the origins; a
+    // pair of two origins is taken from its first. The grid meets most
+    // rods only to pass them over, so the cheap tests (the pair's order,
+    // a rod that moves, no shared bead, the boxes) are combined without
+    // branches, which a crowd's unpredictable outcomes would mispredict
     const boxGrid grid(boxes);
     forAll(rods_, a)
     {
-        if (!isOrigin(a))
+        if (!origin[a])
         {
             continue;
         }
+        const labelPair& ra = rods_[a];
+        const boundBox& boxA = boxes[a];
         grid.forNear
         (
-            boxes[a],
+            boxA,
             [&](const label b)
             {
-                if (b > a)
+                const labelPair& rb = rods_[b];
+                const boundBox& boxB = boxes[b];
+                if
+                (
+                    ((b > a) | !origin[b])
+                  & (moves[a] | moves[b])
+                  & (ra.first() != rb.first()) & (ra.first() != rb.second())
+                  & (ra.second() != rb.first()) & (ra.second() != rb.second())
+                  & (boxB.max().x() >= boxA.min().x())
+                  & (boxB.min().x() <= boxA.max().x())
+                  & (boxB.max().y() >= boxA.min().y())
+                  & (boxB.min().y() <= boxA.max().y())
+                  & (boxB.max().z() >= boxA.min().z())
+                  & (boxB.min().z() <= boxA.max().z())
+                )
                 {
-                    checkIfNear(a, b);
-                }
-                else if (!isOrigin(b))
-                {
-                    checkIfNear(b, a);
+                    if (b > a)
+                    {
+                        checkIfNear(a, b);
+                    }
+                    else
+                    {
+                        checkIfNear(b, a);
+                    }
                 }
             }
         );
