@@ -25,7 +25,9 @@ Foam::polymer::wallEdges::wallEdges
     points_(),
     edges_(),
     patch_(),
-    tree_()
+    tree_(),
+    edgeBoxes_(),
+    grid_()
 {
     if (!faces.size())
     {
@@ -105,6 +107,14 @@ Foam::polymer::wallEdges::wallEdges
             3.0     // duplicity
         )
     );
+
+    edgeBoxes_.setSize(edges_.size());
+    forAll(edges_, edgei)
+    {
+        edgeBoxes_[edgei] = boundBox(start(edgei));
+        edgeBoxes_[edgei].add(end(edgei));
+    }
+    grid_.reset(new boxGrid(edgeBoxes_));
 }
 
 
@@ -112,11 +122,34 @@ Foam::polymer::wallEdges::wallEdges
 
 Foam::labelList Foam::polymer::wallEdges::near(const boundBox& box) const
 {
-    if (!tree_)
+    if (!grid_)
     {
         return labelList();
     }
-    return tree_->findBox(treeBoundBox(box));
+
+    // The edges the octree's findBox finds, by its test of an edge against
+    // the box (the segment's, not the edge's box), in the edges' order
+    // rather than a hash set's, and without the descent and the set
+    const treeBoundBox searchBox(box);
+    const treeDataEdge& shapes = tree_->shapes();
+    DynamicList<label> found;
+    grid_->forNear
+    (
+        box,
+        [&](const label edgei)
+        {
+            if
+            (
+                edgeBoxes_[edgei].overlaps(searchBox)
+             && shapes.overlaps(edgei, searchBox)
+            )
+            {
+                found.append(edgei);
+            }
+        }
+    );
+    Foam::sort(found);
+    return labelList(std::move(found));
 }
 
 
