@@ -12,6 +12,7 @@ License
 
 #include "rodCrossingAudit.H"
 #include "rodsFartherThan.H"
+#include "boxesMeet.H"
 
 #include <algorithm>
 #include <cmath>
@@ -444,19 +445,13 @@ Foam::polymer::rodCrossingAudit::check
             [&](const label b)
             {
                 const labelPair& rb = rods_[b];
-                const boundBox& boxB = boxes[b];
                 if
                 (
                     ((b > a) | !origin[b])
                   & (moves[a] | moves[b])
                   & (ra.first() != rb.first()) & (ra.first() != rb.second())
                   & (ra.second() != rb.first()) & (ra.second() != rb.second())
-                  & (boxB.max().x() >= boxA.min().x())
-                  & (boxB.min().x() <= boxA.max().x())
-                  & (boxB.max().y() >= boxA.min().y())
-                  & (boxB.min().y() <= boxA.max().y())
-                  & (boxB.max().z() >= boxA.min().z())
-                  & (boxB.min().z() <= boxA.max().z())
+                  & boxesMeet(boxA, boxes[b])
                 )
                 {
                     if (b > a)

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "sweptBoxGrid.H"
+#include "boxesMeet.H"
 
 #include <algorithm>
 #include <cmath>
@@ -404,22 +405,15 @@ void Foam::polymer::sweptBoxGrid::query
                 const label celli = (i*nCells_.y() + j)*nCells_.z() + k;
                 for (const label other : cells_[celli])
                 {
-                    // Every test evaluated, combined without branches:
-                    // which boxes meet is unpredictable in a crowd, and a
-                    // mispredicted branch costs more than the tests
+                    // Every test evaluated, combined without branches
+                    // (boxesMeet)
                     const Vector<label>& first = firstCell_[other];
-                    const boundBox& otherBox = box_[other];
                     if
                     (
                         (max(lower.x(), first.x()) == i)
                       & (max(lower.y(), first.y()) == j)
                       & (max(lower.z(), first.z()) == k)
-                      & (otherBox.max().x() >= box.min().x())
-                      & (otherBox.min().x() <= box.max().x())
-                      & (otherBox.max().y() >= box.min().y())
-                      & (otherBox.min().y() <= box.max().y())
-                      & (otherBox.max().z() >= box.min().z())
-                      & (otherBox.min().z() <= box.max().z())
+                      & boxesMeet(box_[other], box)
                     )
                     {
                         // rod + shift meets other: other - shift is rod's
