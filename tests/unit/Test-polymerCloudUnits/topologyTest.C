@@ -9,12 +9,18 @@ Description
       crossing between periodic images, either way round and two lattice
       translations apart, is found only with the lattice (once, with its
       translation), and a rod's own image does not count; the crossings
-      of many rods come in the same order whatever the grid's cells.
+      of many rods come in the same order whatever the grid's cells;
+      given a broad phase's boxes and pairs (rodBoxPairs) that hold the
+      rods apart, the audit finds the same crossings from the listed pairs,
+      and where they do not (a rod moving beyond its depth in its box,
+      other rods) it searches as before.
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
 #include "testHelpers.H"
 #include "rodCrossingAudit.H"
+#include "rodBoxPairs.H"
+#include "boxesMeet.H"
 #include "knotDeterminant.H"
 #include "trefoil.H"
 #include "tensor.H"
@@ -442,6 +448,112 @@ TEST(rodCrossingAudit, ListsTheCrossingsInAnOrderTheCellsDoNotChange)
             EXPECT_EQ(a[i].shift, b[i].shift) << "crossing " << i;
             EXPECT_EQ(a[i].piece, b[i].piece) << "crossing " << i;
             EXPECT_EQ(a[i].fraction, b[i].fraction) << "crossing " << i;
+        }
+    }
+}
+
+
+TEST(rodCrossingAudit, TakesTheBroadPhasePairsWhereTheyHoldTheRodsApart)
+{
+    // 200 rods of length 1 at random in a 4 a cube, each bead moving by up
+    // to 0.02 a along each axis, as a re-projection moves them (a rod's
+    // reach is below 0.035 a), and the first two rods
+    // placed 0.01 a apart, the second passing through the first: a
+    // crossing. The broad phase's boxes are the rods' boxes grown by fat
+    // on every side, its pairs those whose boxes meet (as sweptBoxGrid
+    // lists them)
+    std::mt19937_64 gen(11);
+    std::uniform_real_distribution<double> u(0, 4), w(-0.5, 0.5);
+    const label nRods = 200;
+    List<point> start(2*nRods), end(2*nRods);
+    List<labelPair> rods(nRods);
+    for (label rod = 0; rod < nRods; ++rod)
+    {
+        const point centre(u(gen), u(gen), u(gen));
+        vector along(w(gen), w(gen), w(gen));
+        along /= 2*mag(along);
+        start[2*rod] = centre - along;
+        start[2*rod + 1] = centre + along;
+        for (const label bead : {2*rod, 2*rod + 1})
+        {
+            end[bead] = start[bead] + 0.04*vector(w(gen), w(gen), w(gen));
+        }
+        rods[rod] = labelPair(2*rod, 2*rod + 1);
+    }
+    start[0] = point(2, 1.5, 2);
+    start[1] = point(2, 2.5, 2);
+    end[0] = start[0];
+    end[1] = start[1];
+    start[2] = point(1.5, 2, 2.01);
+    start[3] = point(2.5, 2, 2.01);
+    end[2] = point(1.5, 2, 1.99);
+    end[3] = point(2.5, 2, 1.99);
+
+    const auto broadPhase = [&](const scalar fat, List<boundBox>& boxes)
+    {
+        boxes.setSize(nRods);
+        DynamicList<labelPair> pairs;
+        forAll(rods, rod)
+        {
+            boxes[rod] = boundBox(start[rods[rod].first()]);
+            boxes[rod].add(start[rods[rod].second()]);
+            boxes[rod] = boundBox
+            (
+                boxes[rod].min() - vector::uniform(fat),
+                boxes[rod].max() + vector::uniform(fat)
+            );
+        }
+        forAll(rods, a)
+        {
+            for (label b = a + 1; b < nRods; ++b)
+            {
+                if (boxesMeet(boxes[a], boxes[b]))
+                {
+                    pairs.append(labelPair(b, a));
+                }
+            }
+        }
+        return List<labelPair>(std::move(pairs));
+    };
+
+    const List<rodCrossingAudit::crossing> searched =
+        rodCrossingAudit(rods).check(start, end);
+    ASSERT_GE(searched.size(), 1);
+    EXPECT_EQ(searched[0].rodA, rods[0]);
+    EXPECT_EQ(searched[0].rodB, rods[1]);
+
+    List<scalar> reach(nRods);
+    forAll(rods, rod)
+    {
+        const label i = rods[rod].first(), j = rods[rod].second();
+        reach[rod] = max(mag(end[i] - start[i]), mag(end[j] - start[j]));
+    }
+
+    // Boxes 0.1 a larger than the rods (more than any reach) hold them
+    // apart; 0.01 a larger do not (most rods move farther); nor do the
+    // boxes of other rods
+    for (const scalar fat : {0.1, 0.01})
+    {
+        List<boundBox> boxes;
+        const List<labelPair> pairs(broadPhase(fat, boxes));
+        const List<vector> shifts(pairs.size(), Zero);
+        const rodBoxPairs candidates(rods, boxes, pairs, shifts);
+        EXPECT_EQ(candidates.holdsApart(rods, start, reach), fat > 0.05)
+            << "fat " << fat;
+        const List<labelPair> others(rods.size(), labelPair(0, 2));
+        EXPECT_FALSE(candidates.holdsApart(others, start, reach));
+
+        const List<rodCrossingAudit::crossing> listed =
+            rodCrossingAudit(rods, List<vector>(), candidates)
+           .check(start, end);
+        ASSERT_EQ(listed.size(), searched.size()) << "fat " << fat;
+        forAll(listed, i)
+        {
+            EXPECT_EQ(listed[i].rodA, searched[i].rodA) << "crossing " << i;
+            EXPECT_EQ(listed[i].rodB, searched[i].rodB) << "crossing " << i;
+            EXPECT_EQ(listed[i].piece, searched[i].piece) << "crossing " << i;
+            EXPECT_EQ(listed[i].fraction, searched[i].fraction)
+                << "crossing " << i;
         }
     }
 }

@@ -446,7 +446,8 @@ void Foam::polymer::contactProjection::project
     const UList<point>& positionsStart,
     const scalar deltaT,
     const scalar time,
-    const wallModel* wall
+    const wallModel* wall,
+    const rodBoxPairs& candidates
 )
 {
     const scalar tolerance = constraint_.lengthTolerance();
@@ -493,7 +494,7 @@ void Foam::polymer::contactProjection::project
     }
 
     rods_.update(chains_);
-    const rodCrossingAudit audit(rods_.rods(), lattice_);
+    const rodCrossingAudit audit(rods_.rods(), lattice_, candidates);
     List<point> positionsAudited;
     if (contactRounds)
     {
@@ -536,11 +537,12 @@ void Foam::polymer::contactProjection::correct
     const UList<point>& positionsStart,
     const scalar deltaT,
     const scalar time,
-    const wallModel* wall
+    const wallModel* wall,
+    const rodBoxPairs& candidates
 )
 {
     cpuTimeCxx timer;
-    project(positionsStart, deltaT, time, wall);
+    project(positionsStart, deltaT, time, wall, candidates);
     counts_.seconds += timer.cpuTimeIncrement();
 }
 

@@ -340,7 +340,8 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
             stepper_->positionsOld(),
             deltaT,
             time,
-            wall_.get()
+            wall_.get(),
+            collision_->candidatePairs()
         );
         pathTimes_.lap(pathTimes::reproject);
     }

@@ -13,6 +13,7 @@ License
 #include "rodCrossingAudit.H"
 #include "rodsFartherThan.H"
 #include "boxesMeet.H"
+#include "autoPtr.H"
 
 #include <algorithm>
 #include <cmath>
@@ -90,11 +91,13 @@ bool crossingOrder
 Foam::polymer::rodCrossingAudit::rodCrossingAudit
 (
     const List<labelPair>& rods,
-    const UList<vector>& lattice
+    const UList<vector>& lattice,
+    const rodBoxPairs& candidates
 )
 :
     rods_(rods),
-    shifts_()
+    shifts_(),
+    candidates_(candidates)
 {
     // Every combination of -2..2 of each lattice vector whose first
     // non-zero coefficient is positive: each image pair once
@@ -407,64 +410,58 @@ Foam::polymer::rodCrossingAudit::check
     const boolList& origin = rodsToCheck.empty() ? moves : rodsToCheck;
 
     DynamicList<crossing> found;
-    const auto checkIfNear = [&](const label a, const label b)
+    // Candidates from the collisions' broad phase where it holds every
+    // other pair apart, else from a grid of the boxes, looked up from the
+    // origins; a pair of two origins is taken from its first. The grid
+    // meets most rods only to pass them over, so the cheap tests (the
+    // pair's order, a rod that moves, no shared bead, the boxes) are
+    // combined without branches, which a crowd's unpredictable outcomes
+    // would mispredict
+    autoPtr<boxGrid> grid;
+    if (candidates_.holdsApart(rods_, path[0], reach))
     {
-        const labelPair& ra = rods_[a];
-        const labelPair& rb = rods_[b];
-        if
-        (
-            !rodsFartherThan
-            (
-                path[0][ra.first()], path[0][ra.second()],
-                path[0][rb.first()], path[0][rb.second()],
-                reach[a] + reach[b]
-            )
-        )
-        {
-            checkPair(ra, rb, vector::zero, path, found);
-        }
-    };
-
-    // Candidates from a grid of the boxes, looked up from the origins; a
-    // pair of two origins is taken from its first. The grid meets most
-    // rods only to pass them over, so the cheap tests (the pair's order,
-    // a rod that moves, no shared bead, the boxes) are combined without
-    // branches, which a crowd's unpredictable outcomes would mispredict
-    const boxGrid grid(boxes);
-    forAll(rods_, a)
+        checkListed(boxes, moves, origin, reach, path, found);
+    }
+    else
     {
-        if (!origin[a])
+        grid.reset(new boxGrid(boxes));
+        forAll(rods_, a)
         {
-            continue;
-        }
-        const labelPair& ra = rods_[a];
-        const boundBox& boxA = boxes[a];
-        grid.forNear
-        (
-            boxA,
-            [&](const label b)
+            if (!origin[a])
             {
-                const labelPair& rb = rods_[b];
-                if
-                (
-                    ((b > a) | !origin[b])
-                  & (moves[a] | moves[b])
-                  & (ra.first() != rb.first()) & (ra.first() != rb.second())
-                  & (ra.second() != rb.first()) & (ra.second() != rb.second())
-                  & boxesMeet(boxA, boxes[b])
-                )
+                continue;
+            }
+            const labelPair& ra = rods_[a];
+            const boundBox& boxA = boxes[a];
+            grid->forNear
+            (
+                boxA,
+                [&](const label b)
                 {
-                    if (b > a)
+                    const labelPair& rb = rods_[b];
+                    if
+                    (
+                        ((b > a) | !origin[b])
+                      & (moves[a] | moves[b])
+                      & (ra.first() != rb.first())
+                      & (ra.first() != rb.second())
+                      & (ra.second() != rb.first())
+                      & (ra.second() != rb.second())
+                      & boxesMeet(boxA, boxes[b])
+                    )
                     {
-                        checkIfNear(a, b);
-                    }
-                    else
-                    {
-                        checkIfNear(b, a);
+                        if (b > a)
+                        {
+                            checkIfNear(a, b, reach, path, found);
+                        }
+                        else
+                        {
+                            checkIfNear(b, a, reach, path, found);
+                        }
                     }
                 }
-            }
-        );
+            );
+        }
     }
 
     // The images, where the rods' box meets its translate
@@ -477,9 +474,13 @@ Foam::polymer::rodCrossingAudit::check
     {
         if (all.overlaps(boundBox(all.min() + shift, all.max() + shift)))
         {
+            if (!grid.valid())
+            {
+                grid.reset(new boxGrid(boxes));
+            }
             checkImages
             (
-                shift, boxes, moves, reach, rodsToCheck, grid, path, found
+                shift, boxes, moves, reach, rodsToCheck, grid(), path, found
             );
         }
     }
@@ -490,6 +491,70 @@ Foam::polymer::rodCrossingAudit::check
     // piece instead, an order of the rods alone
     std::stable_sort(found.begin(), found.end(), crossingOrder);
     return List<crossing>(std::move(found));
+}
+
+
+void Foam::polymer::rodCrossingAudit::checkIfNear
+(
+    const label a,
+    const label b,
+    const scalarList& reach,
+    const UList<List<point>>& path,
+    DynamicList<crossing>& found
+) const
+{
+    const labelPair& ra = rods_[a];
+    const labelPair& rb = rods_[b];
+    if
+    (
+        !rodsFartherThan
+        (
+            path[0][ra.first()], path[0][ra.second()],
+            path[0][rb.first()], path[0][rb.second()],
+            reach[a] + reach[b]
+        )
+    )
+    {
+        checkPair(ra, rb, vector::zero, path, found);
+    }
+}
+
+
+void Foam::polymer::rodCrossingAudit::checkListed
+(
+    const UList<boundBox>& boxes,
+    const boolList& moves,
+    const boolList& origin,
+    const scalarList& reach,
+    const UList<List<point>>& path,
+    DynamicList<crossing>& found
+) const
+{
+    // The pairs the grid's look-ups would take, by the same tests: each
+    // listed pair is one unordered pair of rods
+    const UList<labelPair>& pairs = candidates_.pairs();
+    forAll(pairs, pairi)
+    {
+        if (candidates_.shift(pairi) != vector::zero)
+        {
+            continue;
+        }
+        const label a = min(pairs[pairi].first(), pairs[pairi].second());
+        const label b = max(pairs[pairi].first(), pairs[pairi].second());
+        const labelPair& ra = rods_[a];
+        const labelPair& rb = rods_[b];
+        if
+        (
+            (origin[a] | origin[b])
+          & (moves[a] | moves[b])
+          & (ra.first() != rb.first()) & (ra.first() != rb.second())
+          & (ra.second() != rb.first()) & (ra.second() != rb.second())
+          & boxesMeet(boxes[a], boxes[b])
+        )
+        {
+            checkIfNear(a, b, reach, path, found);
+        }
+    }
 }
 
 
