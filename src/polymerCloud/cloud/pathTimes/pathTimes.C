@@ -39,11 +39,41 @@ Foam::polymer::pathTimes::pathTimes()
 :
     seconds_(Zero),
     last_(std::clock()),
-    started_(last_)
+    started_(last_),
+    open_(false),
+    lapLast_(lapClock::now()),
+    lapTimes_(lapClock::duration::zero())
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::polymer::pathTimes::stop()
+{
+    last_ = std::clock();
+    const scalar cpuSeconds = scalar(last_ - started_)/CLOCKS_PER_SEC;
+    if (!open_)
+    {
+        return cpuSeconds;
+    }
+    open_ = false;
+
+    lapClock::duration lapped = lapClock::duration::zero();
+    for (const lapClock::duration& t : lapTimes_)
+    {
+        lapped += t;
+    }
+    if (lapped.count() > 0)
+    {
+        const scalar perTick = cpuSeconds/lapped.count();
+        for (label p = 0; p < nPaths; ++p)
+        {
+            seconds_[p] += perTick*lapTimes_[p].count();
+        }
+    }
+    return cpuSeconds;
+}
+
 
 void Foam::polymer::pathTimes::writeReport(Ostream& os) const
 {

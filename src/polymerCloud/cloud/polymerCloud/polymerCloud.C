@@ -457,7 +457,7 @@ void Foam::polymer::polymerCloud::evolve()
 
     // The step's paths up to its bookkeeping, the cloud functions' laps
     // within the step included
-    evolveSeconds_ += pathTimes_.sinceStart();
+    evolveSeconds_ += pathTimes_.stop();
     if (!firstStepDone_)
     {
         firstStepSeconds_ = evolveSeconds_;

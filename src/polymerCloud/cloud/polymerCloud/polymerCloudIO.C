@@ -488,6 +488,7 @@ bool Foam::polymer::polymerCloud::writeObject
 
     const bool written = ok && cloud::writeObject(fmt, ver, cmp, valid);
     pathTimes_.lap(pathTimes::write);
+    pathTimes_.stop();
     return written;
 }
 
