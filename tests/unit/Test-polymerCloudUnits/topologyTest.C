@@ -11,9 +11,9 @@ Description
       translation), and a rod's own image does not count; the crossings
       of many rods come in the same order whatever the grid's cells;
       given a broad phase's boxes and pairs (rodBoxPairs) that hold the
-      rods apart, the audit finds the same crossings from the listed pairs,
-      and where they do not (a rod moving beyond its depth in its box,
-      other rods) it searches as before.
+      rods apart, the audit finds the same crossings from the listed pairs
+      and a search from the rods they do not hold apart (a rod moving
+      beyond its depth in its box), or, for other rods, searches as before.
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
@@ -529,19 +529,23 @@ TEST(rodCrossingAudit, TakesTheBroadPhasePairsWhereTheyHoldTheRodsApart)
         reach[rod] = max(mag(end[i] - start[i]), mag(end[j] - start[j]));
     }
 
-    // Boxes 0.1 a larger than the rods (more than any reach) hold them
-    // apart; 0.01 a larger do not (most rods move farther); nor do the
-    // boxes of other rods
-    for (const scalar fat : {0.1, 0.01})
+    // Boxes 0.1 a larger than the rods (more than any reach) hold them all
+    // apart; 0.01 a larger hold some (most rods move farther: the grid is
+    // looked up from those); 0.001 a larger leave the crossing pair
+    // unlisted, found by the look-up from the moving rod; the boxes of
+    // other rods hold none
+    for (const scalar fat : {0.1, 0.01, 0.001})
     {
         List<boundBox> boxes;
         const List<labelPair> pairs(broadPhase(fat, boxes));
         const List<vector> shifts(pairs.size(), Zero);
         const rodBoxPairs candidates(rods, boxes, pairs, shifts);
-        EXPECT_EQ(candidates.holdsApart(rods, start, reach), fat > 0.05)
-            << "fat " << fat;
+        const boolList held(candidates.heldApart(rods, start, reach));
+        ASSERT_EQ(held.size(), nRods);
+        EXPECT_EQ(held.found(false), fat < 0.05) << "fat " << fat;
+        EXPECT_TRUE(held.found(true)) << "fat " << fat;
         const List<labelPair> others(rods.size(), labelPair(0, 2));
-        EXPECT_FALSE(candidates.holdsApart(others, start, reach));
+        EXPECT_TRUE(candidates.heldApart(others, start, reach).empty());
 
         const List<rodCrossingAudit::crossing> listed =
             rodCrossingAudit(rods, List<vector>(), candidates)

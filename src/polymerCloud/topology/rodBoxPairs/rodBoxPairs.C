@@ -62,7 +62,7 @@ Foam::scalar Foam::polymer::rodBoxPairs::clearance
 }
 
 
-bool Foam::polymer::rodBoxPairs::holdsApart
+Foam::boolList Foam::polymer::rodBoxPairs::heldApart
 (
     const UList<labelPair>& rods,
     const UList<point>& positions,
@@ -71,15 +71,16 @@ bool Foam::polymer::rodBoxPairs::holdsApart
 {
     if (!valid() || rods != *rods_ || boxes_->size() != rods.size())
     {
-        return false;
+        return boolList();
     }
 
-    // Two rods outside the list have boxes apart by a gap g >= 0 along an
-    // axis, so their distance is at least g + clearance(a) + clearance(b),
-    // more than reach(a) + reach(b) where each rod's reach is less than its
-    // depth. The margin, on the scale of the boxes' coordinates (which
-    // bounds the rods' lengths), is far above the round-off of the depths
-    // and of the audit's contacts (1e-10 of the rods' lengths)
+    // Two rods of an unlisted pair have boxes apart by a gap g >= 0 along
+    // an axis, so their distance is at least g + clearance(a) +
+    // clearance(b), more than reach(a) + reach(b) where each rod's reach
+    // is less than its depth. The margin, on the scale of the boxes'
+    // coordinates (which bounds the rods' lengths), is far above the
+    // round-off of the depths and of the audit's contacts (1e-10 of the
+    // rods' lengths)
     scalar scale = 0;
     for (const boundBox& box : *boxes_)
     {
@@ -90,15 +91,14 @@ bool Foam::polymer::rodBoxPairs::holdsApart
         );
     }
     const scalar margin = 1e-9*scale + VSMALL;
+    boolList held(rods.size());
     forAll(rods, rodi)
     {
         const scalar depth = clearance(rodi, positions);
-        if (depth < 0 || (reach[rodi] > 0 && !(reach[rodi] + margin < depth)))
-        {
-            return false;
-        }
+        held[rodi] =
+            depth >= 0 && (reach[rodi] == 0 || reach[rodi] + margin < depth);
     }
-    return true;
+    return held;
 }
 
 

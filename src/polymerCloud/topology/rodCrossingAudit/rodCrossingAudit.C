@@ -410,58 +410,19 @@ Foam::polymer::rodCrossingAudit::check
     const boolList& origin = rodsToCheck.empty() ? moves : rodsToCheck;
 
     DynamicList<crossing> found;
-    // Candidates from the collisions' broad phase where it holds every
-    // other pair apart, else from a grid of the boxes, looked up from the
-    // origins; a pair of two origins is taken from its first. The grid
-    // meets most rods only to pass them over, so the cheap tests (the
-    // pair's order, a rod that moves, no shared bead, the boxes) are
-    // combined without branches, which a crowd's unpredictable outcomes
-    // would mispredict
+    // Candidates: the collisions' listed pairs, and a grid of the boxes
+    // looked up from the rods they do not hold apart (every rod without
+    // them), a pair from its first such rod
+    const boolList held(candidates_.heldApart(rods_, path[0], reach));
     autoPtr<boxGrid> grid;
-    if (candidates_.holdsApart(rods_, path[0], reach))
+    if (held.size())
     {
         checkListed(boxes, moves, origin, reach, path, found);
     }
-    else
+    if (held.empty() || held.found(false))
     {
         grid.reset(new boxGrid(boxes));
-        forAll(rods_, a)
-        {
-            if (!origin[a])
-            {
-                continue;
-            }
-            const labelPair& ra = rods_[a];
-            const boundBox& boxA = boxes[a];
-            grid->forNear
-            (
-                boxA,
-                [&](const label b)
-                {
-                    const labelPair& rb = rods_[b];
-                    if
-                    (
-                        ((b > a) | !origin[b])
-                      & (moves[a] | moves[b])
-                      & (ra.first() != rb.first())
-                      & (ra.first() != rb.second())
-                      & (ra.second() != rb.first())
-                      & (ra.second() != rb.second())
-                      & boxesMeet(boxA, boxes[b])
-                    )
-                    {
-                        if (b > a)
-                        {
-                            checkIfNear(a, b, reach, path, found);
-                        }
-                        else
-                        {
-                            checkIfNear(b, a, reach, path, found);
-                        }
-                    }
-                }
-            );
-        }
+        checkNear(grid(), boxes, moves, origin, held, reach, path, found);
     }
 
     // The images, where the rods' box meets its translate
@@ -516,6 +477,60 @@ void Foam::polymer::rodCrossingAudit::checkIfNear
     )
     {
         checkPair(ra, rb, vector::zero, path, found);
+    }
+}
+
+
+void Foam::polymer::rodCrossingAudit::checkNear
+(
+    const boxGrid& grid,
+    const UList<boundBox>& boxes,
+    const boolList& moves,
+    const boolList& origin,
+    const boolList& held,
+    const scalarList& reach,
+    const UList<List<point>>& path,
+    DynamicList<crossing>& found
+) const
+{
+    // Looked up from the rods every pair to check has one of: without
+    // the listed pairs the origins, with them the rods not held apart,
+    // whose partners are the unlisted rods. The grid meets most rods only
+    // to pass them over, so the cheap tests (the pair's order, a rod that
+    // moves, no shared bead, the boxes) are combined without branches,
+    // which a crowd's unpredictable outcomes would mispredict
+    const bool withListed = held.size();
+    const boolList& from = withListed ? held : origin;
+    const bool fromIfSet = !withListed;
+    forAll(rods_, a)
+    {
+        if (from[a] != fromIfSet)
+        {
+            continue;
+        }
+        const labelPair& ra = rods_[a];
+        const boundBox& boxA = boxes[a];
+        grid.forNear
+        (
+            boxA,
+            [&](const label b)
+            {
+                const labelPair& rb = rods_[b];
+                if
+                (
+                    ((b > a) | (from[b] != fromIfSet))
+                  & (origin[a] | origin[b])
+                  & (moves[a] | moves[b])
+                  & (ra.first() != rb.first()) & (ra.first() != rb.second())
+                  & (ra.second() != rb.first()) & (ra.second() != rb.second())
+                  & boxesMeet(boxA, boxes[b])
+                  && !(withListed && candidates_.listed(a, b))
+                )
+                {
+                    checkIfNear(min(a, b), max(a, b), reach, path, found);
+                }
+            }
+        );
     }
 }
 
