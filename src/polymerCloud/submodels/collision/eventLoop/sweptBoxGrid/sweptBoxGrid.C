@@ -54,7 +54,10 @@ Foam::polymer::sweptBoxGrid::sweptBoxGrid()
     pairs_(),
     pairShift_(),
     rodPairs_(),
-    pairKeys_()
+    pairKeys_(),
+    newPairs_(),
+    met_(),
+    nEntries_(0)
 {}
 
 
@@ -265,6 +268,7 @@ void Foam::polymer::sweptBoxGrid::layCells(const label nRods)
     {
         cells_[i].clear();
     }
+    nEntries_ = 0;
 }
 
 
@@ -391,11 +395,19 @@ void Foam::polymer::sweptBoxGrid::query
         return;
     }
 
-    // Each rod of the grid is in every cell its box spans, so a pair is
-    // tested in the first cell both boxes span, the first of them the
-    // scan meets, and passed over in the others
+    // Each rod of the grid is in every cell its box spans, so a pair
+    // is tested in the first cell both boxes span, the first of them the
+    // scan meets, and passed over in the others. Every test is evaluated
+    // and combined without branches (boxesMeet), and each rod met is kept
+    // by a count rather than a branch: a crowd's outcomes, one in five
+    // met, would mispredict
     Vector<label> lower, upper;
     cellRange(box, lower, upper);
+    if (met_.size() < nEntries_)
+    {
+        met_.resize(2*nEntries_);
+    }
+    label nMet = 0;
     for (label i = lower.x(); i <= upper.x(); ++i)
     {
         for (label j = lower.y(); j <= upper.y(); ++j)
@@ -405,24 +417,22 @@ void Foam::polymer::sweptBoxGrid::query
                 const label celli = (i*nCells_.y() + j)*nCells_.z() + k;
                 for (const label other : cells_[celli])
                 {
-                    // Every test evaluated, combined without branches
-                    // (boxesMeet)
                     const Vector<label>& first = firstCell_[other];
-                    if
-                    (
+                    met_[nMet] = other;
+                    nMet +=
                         (max(lower.x(), first.x()) == i)
                       & (max(lower.y(), first.y()) == j)
                       & (max(lower.z(), first.z()) == k)
-                      & boxesMeet(box_[other], box)
-                    )
-                    {
-                        // rod + shift meets other: other - shift is rod's
-                        // partner
-                        addPair(rod, other, -imageCode_[image], -shift);
-                    }
+                      & boxesMeet(box_[other], box);
                 }
             }
         }
+    }
+
+    // rod + shift meets other: other - shift is rod's partner
+    for (label m = 0; m < nMet; ++m)
+    {
+        addPair(rod, met_[m], -imageCode_[image], -shift);
     }
 }
 
@@ -448,6 +458,7 @@ void Foam::polymer::sweptBoxGrid::insert(const label rod)
                 if (cell.empty() || cell.back() != rod)
                 {
                     cell.push_back(rod);
+                    ++nEntries_;
                 }
             }
         }
