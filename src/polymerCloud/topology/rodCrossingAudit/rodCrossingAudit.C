@@ -497,8 +497,8 @@ void Foam::polymer::rodCrossingAudit::checkNear
     // the listed pairs the origins, with them the rods not held apart,
     // whose partners are the unlisted rods. The grid meets most rods only
     // to pass them over, so the cheap tests (the pair's order, a rod that
-    // moves, no shared bead, the boxes) are combined without branches,
-    // which a crowd's unpredictable outcomes would mispredict
+    // moves, no shared bead, the boxes: toCheck) are combined without
+    // branches, which a crowd's unpredictable outcomes would mispredict
     const bool withListed = held.size();
     const boolList& from = withListed ? held : origin;
     const bool fromIfSet = !withListed;
@@ -508,22 +508,15 @@ void Foam::polymer::rodCrossingAudit::checkNear
         {
             continue;
         }
-        const labelPair& ra = rods_[a];
-        const boundBox& boxA = boxes[a];
         grid.forNear
         (
-            boxA,
+            boxes[a],
             [&](const label b)
             {
-                const labelPair& rb = rods_[b];
                 if
                 (
                     ((b > a) | (from[b] != fromIfSet))
-                  & (origin[a] | origin[b])
-                  & (moves[a] | moves[b])
-                  & (ra.first() != rb.first()) & (ra.first() != rb.second())
-                  & (ra.second() != rb.first()) & (ra.second() != rb.second())
-                  & boxesMeet(boxA, boxes[b])
+                  & toCheck(a, b, boxes, moves, origin)
                   && !(withListed && candidates_.listed(a, b))
                 )
                 {
@@ -556,16 +549,7 @@ void Foam::polymer::rodCrossingAudit::checkListed
         }
         const label a = min(pairs[pairi].first(), pairs[pairi].second());
         const label b = max(pairs[pairi].first(), pairs[pairi].second());
-        const labelPair& ra = rods_[a];
-        const labelPair& rb = rods_[b];
-        if
-        (
-            (origin[a] | origin[b])
-          & (moves[a] | moves[b])
-          & (ra.first() != rb.first()) & (ra.first() != rb.second())
-          & (ra.second() != rb.first()) & (ra.second() != rb.second())
-          & boxesMeet(boxes[a], boxes[b])
-        )
+        if (toCheck(a, b, boxes, moves, origin))
         {
             checkIfNear(a, b, reach, path, found);
         }
