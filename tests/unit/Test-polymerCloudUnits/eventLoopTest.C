@@ -219,6 +219,42 @@ TEST(sweptBoxGrid, FindsExactlyTheOverlappingPairs)
 }
 
 
+TEST(sweptBoxGrid, GrownBoxesMeetEachOther)
+{
+    // Two single-rod chains 10 apart in x: no pair at the build. Each box
+    // grown half way towards the other, beyond the cells of the build:
+    // the second grow meets the first grown box (which is in no cell of
+    // the build there), once
+    PtrList<chainType> types(1);
+    types.set(0, new chainType("dimer", 2, 1, 1, 1, 1, false));
+    polymerChains chains(types);
+    chains.append(0, 0, List<vector>({{0, 0, 0}, {0, 1, 0}}),
+        List<vector>(2, Zero));
+    chains.append(0, 1, List<vector>({{10, 0, 0}, {10, 1, 0}}),
+        List<vector>(2, Zero));
+    chainRods rods;
+    rods.update(chains);
+    List<boundBox> boxes(2);
+    boxes[0] = boundBox(point(-0.1, -0.1, -0.1), point(0.1, 1.1, 0.1));
+    boxes[1] = boundBox(point(9.9, -0.1, -0.1), point(10.1, 1.1, 0.1));
+
+    sweptBoxGrid grid;
+    grid.build(rods, List<boundBox>(boxes), List<vector>());
+    EXPECT_EQ(grid.pairs().size(), 0);
+
+    EXPECT_TRUE(grid.grow(0, boundBox(point(0, 0, 0), point(5.1, 1, 0))));
+    EXPECT_EQ(grid.pairs().size(), 0);
+    EXPECT_TRUE(grid.grow(1, boundBox(point(4.9, 0, 0), point(10, 1, 0))));
+    ASSERT_EQ(grid.pairs().size(), 1);
+    EXPECT_EQ(grid.pairs()[0], labelPair(0, 1));
+
+    // Grown again, the pair is not listed twice
+    EXPECT_TRUE(grid.grow(0, boundBox(point(0, 0, 0), point(8, 1, 0))));
+    EXPECT_EQ(grid.pairs().size(), 1);
+    EXPECT_EQ(label(grid.rodPairs(1).size()), 1);
+}
+
+
 TEST(sweptBoxGrid, MeetsAcrossThePeriodicLattice)
 {
     // Two single-rod chains at opposite faces of a period-10 box in x

@@ -45,19 +45,26 @@ Foam::polymer::sweptBoxGrid::sweptBoxGrid()
     reachingImages_(),
     box_(),
     firstCell_(),
+    lastCell_(),
     bounds_(boundBox::invertedBox),
     region_(boundBox::invertedBox),
     cellSize_(1),
     cellsPerLength_(1),
     nCells_(Zero),
-    cells_(),
+    cellStart_(),
+    cellRods_(),
+    grownRods_(),
+    grown_(),
     pairs_(),
     pairShift_(),
+    pairKey_(),
     rodPairs_(),
     pairKeys_(),
+    keysTabled_(false),
     newPairs_(),
-    met_(),
-    nEntries_(0)
+    newOrder_(),
+    groupStart_(),
+    met_()
 {}
 
 
@@ -154,6 +161,21 @@ bool Foam::polymer::sweptBoxGrid::newPairKey(const uint64_t key)
 }
 
 
+void Foam::polymer::sweptBoxGrid::tableKeys()
+{
+    if (keysTabled_)
+    {
+        return;
+    }
+    std::fill(pairKeys_.begin(), pairKeys_.end(), noKey);
+    for (const uint64_t key : pairKey_)
+    {
+        newPairKey(key);
+    }
+    keysTabled_ = true;
+}
+
+
 void Foam::polymer::sweptBoxGrid::addPair
 (
     label rodA,
@@ -162,6 +184,7 @@ void Foam::polymer::sweptBoxGrid::addPair
     vector shift
 )
 {
+    const label group = rodA;
     if
     (
         rods_->chainId(rodA) > rods_->chainId(rodB)
@@ -190,9 +213,11 @@ void Foam::polymer::sweptBoxGrid::addPair
         (uint64_t(rodA)*uint64_t(nRods) + uint64_t(rodB))*125u
       + uint64_t(code + 62);
 
-    if (newPairKey(key))
+    // A build meets each pair once; a grow's look-ups meet the pairs
+    // found before as well
+    if (!keysTabled_ || newPairKey(key))
     {
-        newPairs_.append(newPair{key, labelPair(rodA, rodB), shift});
+        newPairs_.append(newPair{group, key, labelPair(rodA, rodB), shift});
     }
 }
 
@@ -202,19 +227,67 @@ void Foam::polymer::sweptBoxGrid::listNewPairs()
     // The look-ups meet the partners in the order of the cells they scan,
     // which changes with the cells' size. The pairs' order orders the
     // first predictions, and with them the events at one time, so a run
-    // would depend on the grid's cells; in the order of their keys (the
-    // rods' indices, then the translation) it depends on the rods alone
-    std::sort
-    (
-        newPairs_.begin(),
-        newPairs_.end(),
-        [](const newPair& a, const newPair& b) { return a.key < b.key; }
-    );
-    for (const newPair& p : newPairs_)
+    // would depend on the grid's cells; in the order of the rod whose
+    // look-up found them (the later rod of the pair, as if the rods were
+    // inserted one by one), then of their keys (the rods' indices, then
+    // the translation), it depends on the rods alone. A build's pairs are
+    // placed by their rod (a rod finds about one), a grow's all have one
+    const label nRods = box_.size();
+    const label nNew = newPairs_.size();
+    newOrder_.setSize(nNew);
+    const auto byKey = [this](const label a, const label b)
     {
+        return
+            newPairs_[a].group < newPairs_[b].group
+         || (
+                newPairs_[a].group == newPairs_[b].group
+             && newPairs_[a].key < newPairs_[b].key
+            );
+    };
+    if (nNew > 1 && newPairs_.first().group == newPairs_.last().group)
+    {
+        forAll(newOrder_, n)
+        {
+            newOrder_[n] = n;
+        }
+        std::sort(newOrder_.begin(), newOrder_.end(), byKey);
+    }
+    else
+    {
+        groupStart_.setSize(nRods + 1);
+        groupStart_ = 0;
+        for (const newPair& p : newPairs_)
+        {
+            ++groupStart_[p.group + 1];
+        }
+        for (label rod = 0; rod < nRods; ++rod)
+        {
+            groupStart_[rod + 1] += groupStart_[rod];
+        }
+        forAll(newPairs_, n)
+        {
+            newOrder_[groupStart_[newPairs_[n].group]++] = n;
+        }
+        // Grouped: an insertion sort moves each within its group
+        for (label n = 1; n < nNew; ++n)
+        {
+            const label m = newOrder_[n];
+            label k = n;
+            for (; k > 0 && byKey(m, newOrder_[k - 1]); --k)
+            {
+                newOrder_[k] = newOrder_[k - 1];
+            }
+            newOrder_[k] = m;
+        }
+    }
+
+    for (const label n : newOrder_)
+    {
+        const newPair& p = newPairs_[n];
         const label pairi = pairs_.size();
         pairs_.append(p.rods);
         pairShift_.append(p.shift);
+        pairKey_.append(p.key);
         rodPairs_[p.rods.first()].push_back(pairi);
         rodPairs_[p.rods.second()].push_back(pairi);
     }
@@ -258,17 +331,112 @@ void Foam::polymer::sweptBoxGrid::layCells(const label nRods)
         cellSize_ *= 1.25;
     }
     cellsPerLength_ = 1/cellSize_;
+}
 
-    const label n = nCells_.x()*nCells_.y()*nCells_.z();
-    if (label(cells_.size()) < n)
+
+template<class Visit>
+void Foam::polymer::sweptBoxGrid::forCells(const label rod, Visit visit)
+    const
+{
+    const Vector<label>& lower = firstCell_[rod];
+    const Vector<label>& upper = lastCell_[rod];
+    for (label i = lower.x(); i <= upper.x(); ++i)
     {
-        cells_.resize(n);
+        for (label j = lower.y(); j <= upper.y(); ++j)
+        {
+            const label row = (i*nCells_.y() + j)*nCells_.z();
+            for (label k = lower.z(); k <= upper.z(); ++k)
+            {
+                visit(row + k);
+            }
+        }
     }
-    for (label i = 0; i < n; ++i)
+}
+
+
+void Foam::polymer::sweptBoxGrid::fillCells()
+{
+    // Count each cell's rods, then place them in the rods' order
+    const label nRods = box_.size();
+    firstCell_.setSize(nRods);
+    lastCell_.setSize(nRods);
+    const label nCells = nCells_.x()*nCells_.y()*nCells_.z();
+    cellStart_.setSize(nCells + 1);
+    cellStart_ = 0;
+    for (label rod = 0; rod < nRods; ++rod)
     {
-        cells_[i].clear();
+        cellRange(box_[rod], firstCell_[rod], lastCell_[rod]);
+        forCells(rod, [this](const label c) { ++cellStart_[c + 1]; });
     }
-    nEntries_ = 0;
+    for (label c = 0; c < nCells; ++c)
+    {
+        cellStart_[c + 1] += cellStart_[c];
+    }
+    cellRods_.setSize(cellStart_[nCells]);
+    for (label rod = 0; rod < nRods; ++rod)
+    {
+        forCells
+        (
+            rod,
+            [this, rod](const label c) { cellRods_[cellStart_[c]++] = rod; }
+        );
+    }
+    // Each cell's start has moved to the next cell's: back by one
+    for (label c = nCells; c > 0; --c)
+    {
+        cellStart_[c] = cellStart_[c - 1];
+    }
+    cellStart_[0] = 0;
+}
+
+
+void Foam::polymer::sweptBoxGrid::addCellPairs()
+{
+    // The pairs of each cell's rods whose boxes meet, a pair only in the
+    // first cell both span: each found once, as the later rod's look-up
+    // of its own box would find it. Kept by a count, as query keeps them
+    label c = 0;
+    for (label i = 0; i < nCells_.x(); ++i)
+    {
+        for (label j = 0; j < nCells_.y(); ++j)
+        {
+            for (label k = 0; k < nCells_.z(); ++k, ++c)
+            {
+                const label start = cellStart_[c];
+                const label n = cellStart_[c + 1] - start;
+                if (n < 2)
+                {
+                    continue;
+                }
+                if (met_.size() < size_t(n*(n - 1)))
+                {
+                    met_.resize(2*n*(n - 1));
+                }
+                label nMet = 0;
+                for (label p = start; p < start + n; ++p)
+                {
+                    const label a = cellRods_[p];
+                    const Vector<label>& firstA = firstCell_[a];
+                    for (label q = p + 1; q < start + n; ++q)
+                    {
+                        const label b = cellRods_[q];
+                        const Vector<label>& firstB = firstCell_[b];
+                        met_[2*nMet] = b;
+                        met_[2*nMet + 1] = a;
+                        nMet +=
+                            (max(firstA.x(), firstB.x()) == i)
+                          & (max(firstA.y(), firstB.y()) == j)
+                          & (max(firstA.z(), firstB.z()) == k)
+                          & boxesMeet(box_[a], box_[b]);
+                    }
+                }
+                for (label m = 0; m < nMet; ++m)
+                {
+                    addPair(met_[2*m], met_[2*m + 1], 0, Zero);
+                }
+            }
+        }
+    }
 }
 
 
@@ -384,7 +552,8 @@ void Foam::polymer::sweptBoxGrid::reachingImages
 void Foam::polymer::sweptBoxGrid::query
 (
     const label rod,
-    const label image
+    const label image,
+    const label limit
 )
 {
     const vector& shift = imageShift_[image];
@@ -395,28 +564,36 @@ void Foam::polymer::sweptBoxGrid::query
         return;
     }
 
-    // Each rod of the grid is in every cell its box spans, so a pair
-    // is tested in the first cell both boxes span, the first of them the
-    // scan meets, and passed over in the others. Every test is evaluated
-    // and combined without branches (boxesMeet), and each rod met is kept
-    // by a count rather than a branch: a crowd's outcomes, one in five
-    // met, would mispredict
+    // A pair is tested in the first cell both boxes span, the first of
+    // them the scan meets, and passed over in the others. Every test is
+    // evaluated and combined without branches (boxesMeet), and each rod
+    // met is kept by a count rather than a branch: a crowd's outcomes,
+    // one in five met, would mispredict. The grown boxes, beyond the
+    // cells of the build, are tested whole
     Vector<label> lower, upper;
     cellRange(box, lower, upper);
-    if (met_.size() < nEntries_)
+    const size_t most = cellRods_.size() + grownRods_.size();
+    if (met_.size() < most)
     {
-        met_.resize(2*nEntries_);
+        met_.resize(2*most);
     }
     label nMet = 0;
     for (label i = lower.x(); i <= upper.x(); ++i)
     {
         for (label j = lower.y(); j <= upper.y(); ++j)
         {
+            const label row = (i*nCells_.y() + j)*nCells_.z();
             for (label k = lower.z(); k <= upper.z(); ++k)
             {
-                const label celli = (i*nCells_.y() + j)*nCells_.z() + k;
-                for (const label other : cells_[celli])
+                const label end = cellStart_[row + k + 1];
+                for (label p = cellStart_[row + k]; p < end; ++p)
                 {
+                    const label other = cellRods_[p];
+                    if (other >= limit)
+                    {
+                        // A cell's rods are in order
+                        break;
+                    }
                     const Vector<label>& first = firstCell_[other];
                     met_[nMet] = other;
                     nMet +=
@@ -428,49 +605,17 @@ void Foam::polymer::sweptBoxGrid::query
             }
         }
     }
+    for (const label other : grownRods_)
+    {
+        met_[nMet] = other;
+        nMet += boxesMeet(box_[other], box);
+    }
 
     // rod + shift meets other: other - shift is rod's partner
     for (label m = 0; m < nMet; ++m)
     {
         addPair(rod, met_[m], -imageCode_[image], -shift);
     }
-}
-
-
-void Foam::polymer::sweptBoxGrid::insert(const label rod)
-{
-    // The grid holds the rods' own boxes only. A rod's images are looked
-    // up in it, but only those reaching the rods' bounds; every pair
-    // (rod, other + translation) is found once, by the rod inserted
-    // second
-    bounds_.add(box_[rod]);
-    Vector<label> lower, upper;
-    cellRange(box_[rod], lower, upper);
-    firstCell_[rod] = lower;
-    for (label i = lower.x(); i <= upper.x(); ++i)
-    {
-        for (label j = lower.y(); j <= upper.y(); ++j)
-        {
-            for (label k = lower.z(); k <= upper.z(); ++k)
-            {
-                std::vector<label>& cell =
-                    cells_[(i*nCells_.y() + j)*nCells_.z() + k];
-                if (cell.empty() || cell.back() != rod)
-                {
-                    cell.push_back(rod);
-                    ++nEntries_;
-                }
-            }
-        }
-    }
-
-    DynamicList<label>& images = reachingImages_;
-    reachingImages(box_[rod], images);
-    for (const label image : images)
-    {
-        query(rod, image);
-    }
-    listNewPairs();
 }
 
 
@@ -506,10 +651,14 @@ void Foam::polymer::sweptBoxGrid::build
     }
 
     layCells(box_.size());
-    firstCell_.setSize(box_.size());
+    fillCells();
     pairs_.clear();
     pairShift_.clear();
-    std::fill(pairKeys_.begin(), pairKeys_.end(), noKey);
+    pairKey_.clear();
+    keysTabled_ = false;
+    grownRods_.clear();
+    grown_.setSize(box_.size());
+    grown_ = false;
     // Each rod's list emptied, its storage kept for the next steps
     rodPairs_.resize(rods.size());
     for (std::vector<label>& pairsOfRod : rodPairs_)
@@ -517,13 +666,29 @@ void Foam::polymer::sweptBoxGrid::build
         pairsOfRod.clear();
     }
 
-    // A rod meets only the rods inserted before it: the bounds of those
-    // pass over the images that reach none of them
-    bounds_ = boundBox::invertedBox;
-    forAll(box_, rod)
+    addCellPairs();
+    if (imageShift_.size() > 1)
     {
-        insert(rod);
+        // A rod meets the rods before it: the bounds of those pass over
+        // the images that reach none of them (the first image, no
+        // translation, the cells gave)
+        const boundBox allBounds(bounds_);
+        bounds_ = boundBox::invertedBox;
+        forAll(box_, rod)
+        {
+            bounds_.add(box_[rod]);
+            reachingImages(box_[rod], reachingImages_);
+            for (const label image : reachingImages_)
+            {
+                if (image)
+                {
+                    query(rod, image, rod);
+                }
+            }
+        }
+        bounds_ = allBounds;
     }
+    listNewPairs();
 }
 
 
@@ -541,7 +706,22 @@ bool Foam::polymer::sweptBoxGrid::grow
     const vector fat(vector::uniform(margin));
     box_[rod].add(box.min() - fat);
     box_[rod].add(box.max() + fat);
-    insert(rod);
+    bounds_.add(box_[rod]);
+    if (!grown_[rod])
+    {
+        grown_[rod] = true;
+        grownRods_.append(rod);
+    }
+
+    // Every rod's box at each image reaching the bounds; the pairs found
+    // before passed over
+    tableKeys();
+    reachingImages(box_[rod], reachingImages_);
+    for (const label image : reachingImages_)
+    {
+        query(rod, image, box_.size());
+    }
+    listNewPairs();
     return true;
 }
 
