@@ -514,7 +514,9 @@ Foam::scalar Foam::polymer::boundaryFaces::pathClearance
 {
     // A face nearer than reach to the segment has a point in its box
     // widened by reach, so its bounds overlap that, and the octree's test
-    // of the face against the box (as its findBox would list it) passes
+    // of the face against the box (as its findBox would list it) passes.
+    // That test, the costlier, is made only for a face whose bound would
+    // lower the least so far: the least is the same
     if (!tree_.valid() || !(reach > 0))
     {
         return max(reach, 0);
@@ -529,9 +531,10 @@ Foam::scalar Foam::polymer::boundaryFaces::pathClearance
         box,
         [&](const label facei)
         {
-            if (shapes.overlaps(facei, box))
+            const scalar bound = bounds.segmentBound(facei, p0, p1);
+            if (bound < lowest && shapes.overlaps(facei, box))
             {
-                lowest = min(lowest, bounds.segmentBound(facei, p0, p1));
+                lowest = bound;
             }
         }
     );
