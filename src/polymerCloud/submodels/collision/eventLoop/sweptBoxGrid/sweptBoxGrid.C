@@ -408,31 +408,30 @@ void Foam::polymer::sweptBoxGrid::addCellPairs()
                 {
                     continue;
                 }
-                if (met_.size() < size_t(n*(n - 1)))
+                if (met_.size() < size_t(n))
                 {
-                    met_.resize(2*n*(n - 1));
+                    met_.resize(2*n);
                 }
-                label nMet = 0;
                 for (label p = start; p < start + n; ++p)
                 {
                     const label a = cellRods_[p];
                     const Vector<label>& firstA = firstCell_[a];
+                    label nMet = 0;
                     for (label q = p + 1; q < start + n; ++q)
                     {
                         const label b = cellRods_[q];
                         const Vector<label>& firstB = firstCell_[b];
-                        met_[2*nMet] = b;
-                        met_[2*nMet + 1] = a;
+                        met_[nMet] = b;
                         nMet +=
                             (max(firstA.x(), firstB.x()) == i)
                           & (max(firstA.y(), firstB.y()) == j)
                           & (max(firstA.z(), firstB.z()) == k)
                           & boxesMeet(box_[a], box_[b]);
                     }
-                }
-                for (label m = 0; m < nMet; ++m)
-                {
-                    addPair(met_[2*m], met_[2*m + 1], 0, Zero);
+                    for (label m = 0; m < nMet; ++m)
+                    {
+                        addPair(met_[m], a, 0, Zero);
+                    }
                 }
             }
         }
