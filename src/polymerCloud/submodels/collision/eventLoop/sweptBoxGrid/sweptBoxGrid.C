@@ -30,6 +30,23 @@ inline uint64_t keyHash(const uint64_t key)
     return h ^ (h >> 29);
 }
 
+// Is cell (i, j, k) the first that two boxes, starting at cells a and b,
+// both span? Evaluated whole, without branches, to combine with boxesMeet
+inline bool firstShared
+(
+    const Foam::Vector<Foam::label>& a,
+    const Foam::Vector<Foam::label>& b,
+    const Foam::label i,
+    const Foam::label j,
+    const Foam::label k
+)
+{
+    return
+        (Foam::max(a.x(), b.x()) == i)
+      & (Foam::max(a.y(), b.y()) == j)
+      & (Foam::max(a.z(), b.z()) == k);
+}
+
 } // End anonymous namespace
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -420,12 +437,9 @@ void Foam::polymer::sweptBoxGrid::addCellPairs()
                     for (label q = p + 1; q < start + n; ++q)
                     {
                         const label b = cellRods_[q];
-                        const Vector<label>& firstB = firstCell_[b];
                         met_[nMet] = b;
                         nMet +=
-                            (max(firstA.x(), firstB.x()) == i)
-                          & (max(firstA.y(), firstB.y()) == j)
-                          & (max(firstA.z(), firstB.z()) == k)
+                            firstShared(firstA, firstCell_[b], i, j, k)
                           & boxesMeet(box_[a], box_[b]);
                     }
                     for (label m = 0; m < nMet; ++m)
@@ -593,12 +607,9 @@ void Foam::polymer::sweptBoxGrid::query
                         // A cell's rods are in order
                         break;
                     }
-                    const Vector<label>& first = firstCell_[other];
                     met_[nMet] = other;
                     nMet +=
-                        (max(lower.x(), first.x()) == i)
-                      & (max(lower.y(), first.y()) == j)
-                      & (max(lower.z(), first.z()) == k)
+                        firstShared(lower, firstCell_[other], i, j, k)
                       & boxesMeet(box_[other], box);
                 }
             }
