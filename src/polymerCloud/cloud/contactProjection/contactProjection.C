@@ -542,7 +542,8 @@ void Foam::polymer::contactProjection::correct
     const scalar deltaT,
     const scalar time,
     const wallModel* wall,
-    const rodBoxPairs& candidates
+    const rodBoxPairs& candidates,
+    const scalarField& wallClearances
 )
 {
     // Most steps of a dilute scene have no chain off: no clock read (a
@@ -554,6 +555,7 @@ void Foam::polymer::contactProjection::correct
         return;
     }
     counts_.reprojected += nOff;
+    wallClearances_ = wallClearances;
 
     cpuTimeCxx timer;
     project(positionsStart, deltaT, time, wall, candidates, moved);

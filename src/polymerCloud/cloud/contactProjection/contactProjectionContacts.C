@@ -153,9 +153,19 @@ bool Foam::polymer::contactProjection::addBeadContacts
     const List<point>& x = chains_.positions();
     for (label i = chains_.start(chaini); i < chains_.end(chaini); ++i)
     {
+        // A path shorter than the bead's clearance where the events left
+        // it meets no wall (as predict would find): most of the chains'
+        // paths are short corrections of their rods' lengths
         const vector path = x[i] - positionsAfter[i];
         wallModel::impact hit;
-        if (!wall.predict(positionsAfter[i], path, 1, hit))
+        if
+        (
+            (
+                wallClearances_.size()
+             && mag(path) < wallClearances_[i]
+            )
+         || !wall.predict(positionsAfter[i], path, 1, hit)
+        )
         {
             continue;
         }

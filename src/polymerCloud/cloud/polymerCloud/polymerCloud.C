@@ -341,7 +341,8 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
             deltaT,
             time,
             wall_.get(),
-            collision_->candidatePairs()
+            collision_->candidatePairs(),
+            collision_->wallClearances()
         );
         pathTimes_.lap(pathTimes::reproject);
     }

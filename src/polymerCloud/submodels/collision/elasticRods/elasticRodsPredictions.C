@@ -494,6 +494,19 @@ void Foam::polymer::collisionModels::elasticRods::repredict
 }
 
 
+Foam::tmp<Foam::scalarField>
+Foam::polymer::collisionModels::elasticRods::wallClearances() const
+{
+    tmp<scalarField> tclearances(new scalarField(wallBudget_.size()));
+    scalarField& clearances = tclearances.ref();
+    forAll(clearances, bead)
+    {
+        clearances[bead] = max(wallBudget_[bead] - drift_[bead], 0);
+    }
+    return tclearances;
+}
+
+
 void Foam::polymer::collisionModels::elasticRods::listClosePair
 (
     const label pairi
