@@ -94,7 +94,8 @@ Foam::polymer::contactProjection::edgeMeetings
 (
     const wallModel& wall,
     const labelUList& chainList,
-    const UList<point>& from
+    const UList<point>& from,
+    const scalarField& clearances
 ) const
 {
     const wallEdges& edges = wall.edges();
@@ -109,16 +110,19 @@ Foam::polymer::contactProjection::edgeMeetings
         {
             const label j = (i + 1 < end) ? i + 1 : start;
 
-            // The rod's path at its image inside the mesh
-            const vector shift = wall.imageShift(0.5*(from[i] + from[j]));
             // A rod whose path stays farther from every edge than its
             // beads move (no point of it moves more) meets none: no
-            // look-up in the edges' tree (most rods of a device)
-            if
-            (
-                wall.rodEdgeClearance(from[i], from[j], shift)
-              > max(mag(x[i] - from[i]), mag(x[j] - from[j]))
-            )
+            // look-up in the edges' tree (most rods of a device), nor in
+            // the voxels where its clearance is known
+            const scalar moves = max(mag(x[i] - from[i]), mag(x[j] - from[j]));
+            if (clearances.size() && moves < clearances[rods_.beadRods(i)[1]])
+            {
+                continue;
+            }
+
+            // The rod's path at its image inside the mesh
+            const vector shift = wall.imageShift(0.5*(from[i] + from[j]));
+            if (wall.rodEdgeClearance(from[i], from[j], shift) > moves)
             {
                 continue;
             }
@@ -543,7 +547,8 @@ void Foam::polymer::contactProjection::correct
     const scalar time,
     const wallModel* wall,
     const rodBoxPairs& candidates,
-    const scalarField& wallClearances
+    const scalarField& wallClearances,
+    const scalarField& edgeClearances
 )
 {
     // Most steps of a dilute scene have no chain off: no clock read (a
@@ -556,6 +561,7 @@ void Foam::polymer::contactProjection::correct
     }
     counts_.reprojected += nOff;
     wallClearances_ = wallClearances;
+    edgeClearances_ = edgeClearances;
 
     cpuTimeCxx timer;
     project(positionsStart, deltaT, time, wall, candidates, moved);

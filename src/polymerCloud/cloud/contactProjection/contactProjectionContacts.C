@@ -114,7 +114,10 @@ bool Foam::polymer::contactProjection::addEdgeContacts
     for
     (
         const edgeMeeting& meeting
-      : edgeMeetings(wall, labelList(1, chaini), positionsAfter)
+      : edgeMeetings
+        (
+            wall, labelList(1, chaini), positionsAfter, edgeClearances_
+        )
     )
     {
         // A rod that meets the walls again with its contacts held: a

@@ -342,7 +342,8 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
             time,
             wall_.get(),
             collision_->candidatePairs(),
-            collision_->wallClearances()
+            collision_->wallClearances(),
+            collision_->edgeClearances()
         );
         pathTimes_.lap(pathTimes::reproject);
     }

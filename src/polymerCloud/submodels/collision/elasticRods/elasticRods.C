@@ -112,6 +112,7 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     pairLazyQueued_(),
     wallBudget_(),
     edgeBudget_(),
+    edgeDistanceBudget_(),
     grid_(),
     queue_(),
     deferredPairs_(),
@@ -249,6 +250,8 @@ void Foam::polymer::collisionModels::elasticRods::correct
     wallBudget_ = -GREAT;
     edgeBudget_.resize(rods_.size());
     edgeBudget_ = -GREAT;
+    edgeDistanceBudget_.resize(rods_.size());
+    edgeDistanceBudget_ = -GREAT;
 
     // Broad phase: rods whose swept boxes, with the margin that an event
     // on their chains grows them by, overlap. Most rods of a crowded

@@ -61,6 +61,7 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
     if (clearance > 0)
     {
         edgeBudget_[rod] = clearance + rodDrift(rod);
+        edgeDistanceBudget_[rod] = edgeBudget_[rod];
         return;
     }
     // Else the edges near the path, looked up in a box wider than the
@@ -71,6 +72,7 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
     const scalar margin = growMargin(rod, t, dt);
     const vector fat(vector::uniform(margin));
     scalar budget = margin;
+    bool distance = true;
 
     // The rod and each edge in turn, filled element by element (as in
     // predict: not from initializer lists, whose copies stalled the reads)
@@ -118,6 +120,7 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
                 budget,
                 pair.signKeepingDrift(rest, pairContacts::bandMargin(pair))
             );
+            distance = false;
             continue;
         }
         budget = 0;
@@ -136,6 +139,7 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
         queue_.push(e);
     }
     edgeBudget_[rod] = (budget > 0) ? budget + rodDrift(rod) : -GREAT;
+    edgeDistanceBudget_[rod] = distance ? edgeBudget_[rod] : -GREAT;
 }
 
 

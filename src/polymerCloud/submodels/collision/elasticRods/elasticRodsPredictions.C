@@ -507,6 +507,25 @@ Foam::polymer::collisionModels::elasticRods::wallClearances() const
 }
 
 
+Foam::tmp<Foam::scalarField>
+Foam::polymer::collisionModels::elasticRods::edgeClearances() const
+{
+    // None on a periodic mesh: a rod meets the edges at one image, its
+    // middle's, which its path may change
+    if (lattice_.size())
+    {
+        return tmp<scalarField>::New();
+    }
+    tmp<scalarField> tclearances(new scalarField(edgeDistanceBudget_.size()));
+    scalarField& clearances = tclearances.ref();
+    forAll(clearances, rod)
+    {
+        clearances[rod] = max(edgeDistanceBudget_[rod] - rodDrift(rod), 0);
+    }
+    return tclearances;
+}
+
+
 void Foam::polymer::collisionModels::elasticRods::listClosePair
 (
     const label pairi
