@@ -274,7 +274,7 @@ void Foam::polymer::rodCrossingAudit::checkPair
     const labelPair& a,
     const labelPair& b,
     const vector& shift,
-    const UList<List<point>>& path,
+    const UList<UList<point>>& path,
     DynamicList<crossing>& found
 ) const
 {
@@ -360,9 +360,9 @@ void Foam::polymer::rodCrossingAudit::checkPair
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::List<Foam::polymer::rodCrossingAudit::crossing>
-Foam::polymer::rodCrossingAudit::check
+Foam::polymer::rodCrossingAudit::checkPath
 (
-    const UList<List<point>>& path,
+    const UList<UList<point>>& path,
     const boolList& rodsToCheck
 ) const
 {
@@ -378,7 +378,7 @@ Foam::polymer::rodCrossingAudit::check
     forAll(rods_, rodi)
     {
         boxes[rodi] = boundBox(path[0][rods_[rodi].first()]);
-        for (const List<point>& configuration : path)
+        for (const UList<point>& configuration : path)
         {
             boxes[rodi].add(configuration[rods_[rodi].first()]);
             boxes[rodi].add(configuration[rods_[rodi].second()]);
@@ -460,7 +460,7 @@ void Foam::polymer::rodCrossingAudit::checkIfNear
     const label a,
     const label b,
     const scalarList& reach,
-    const UList<List<point>>& path,
+    const UList<UList<point>>& path,
     DynamicList<crossing>& found
 ) const
 {
@@ -489,7 +489,7 @@ void Foam::polymer::rodCrossingAudit::checkNear
     const boolList& origin,
     const boolList& held,
     const scalarList& reach,
-    const UList<List<point>>& path,
+    const UList<UList<point>>& path,
     DynamicList<crossing>& found
 ) const
 {
@@ -534,7 +534,7 @@ void Foam::polymer::rodCrossingAudit::checkListed
     const boolList& moves,
     const boolList& origin,
     const scalarList& reach,
-    const UList<List<point>>& path,
+    const UList<UList<point>>& path,
     DynamicList<crossing>& found
 ) const
 {
@@ -565,7 +565,7 @@ void Foam::polymer::rodCrossingAudit::checkImages
     const scalarList& reach,
     const boolList& rodsToCheck,
     const boxGrid& grid,
-    const UList<List<point>>& path,
+    const UList<UList<point>>& path,
     DynamicList<crossing>& found
 ) const
 {
@@ -622,15 +622,31 @@ void Foam::polymer::rodCrossingAudit::checkImages
 Foam::List<Foam::polymer::rodCrossingAudit::crossing>
 Foam::polymer::rodCrossingAudit::check
 (
+    const UList<List<point>>& path,
+    const boolList& rodsToCheck
+) const
+{
+    List<UList<point>> views(path.size());
+    forAll(path, k)
+    {
+        views[k].shallowCopy(path[k]);
+    }
+    return checkPath(views, rodsToCheck);
+}
+
+
+Foam::List<Foam::polymer::rodCrossingAudit::crossing>
+Foam::polymer::rodCrossingAudit::check
+(
     const UList<point>& start,
     const UList<point>& end,
     const boolList& rodsToCheck
 ) const
 {
-    List<List<point>> path(2);
-    path[0] = start;
-    path[1] = end;
-    return check(path, rodsToCheck);
+    List<UList<point>> path(2);
+    path[0].shallowCopy(start);
+    path[1].shallowCopy(end);
+    return checkPath(path, rodsToCheck);
 }
 
 
