@@ -103,21 +103,30 @@ Foam::label Foam::polymer::cloudFunctions::chainStatistics::rodsOutside() const
     const periodicImages& periodic = periodicImages::New(mesh);
     const cellLocator& locator = cellLocator::New(mesh);
 
-    // Midpoints this processor's mesh does not hold may be in another's
+    // Midpoints this processor's mesh does not hold may be in another's.
+    // Each is sought from the cell of the chain's last midpoint found, a
+    // rod's length away (the tree's search when there is none, or the
+    // walk stops short): the same cells hold it
     DynamicList<point> unheld;
     for (label c = 0; c < chains.nChains(); ++c)
     {
         const label first = chains.start(c);
         const label size = chains.size(c);
+        label lastCell = -1;
         for (label k = 0; k < chains.type(c).nRods(); ++k)
         {
             const point middle = periodic.wrap
             (
                 0.5*(x[first + k] + x[first + (k + 1) % size])
             );
-            if (locator.findCell(middle) < 0)
+            const label celli = locator.findCell(middle, lastCell);
+            if (celli < 0)
             {
                 unheld.append(middle);
+            }
+            else
+            {
+                lastCell = celli;
             }
         }
     }
