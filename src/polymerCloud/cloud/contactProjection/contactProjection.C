@@ -502,6 +502,10 @@ void Foam::polymer::contactProjection::project
     }
 
     rods_.update(chains_);
+    if (edgeClearances_.size() != rods_.size())
+    {
+        edgeClearances_.clear();
+    }
     const rodCrossingAudit audit(rods_.rods(), lattice_, candidates);
     List<point> positionsAudited;
     if (contactRounds)
@@ -560,7 +564,11 @@ void Foam::polymer::contactProjection::correct
         return;
     }
     counts_.reprojected += nOff;
-    wallClearances_ = wallClearances;
+    // The clearances only where they are the beads' and rods' of these
+    // chains
+    wallClearances_ =
+        (wallClearances.size() == chains_.nBeads())
+      ? wallClearances : scalarField::null();
     edgeClearances_ = edgeClearances;
 
     cpuTimeCxx timer;
