@@ -550,9 +550,7 @@ void Foam::polymer::contactProjection::correct
     const scalar deltaT,
     const scalar time,
     const wallModel* wall,
-    const rodBoxPairs& candidates,
-    const scalarField& wallClearances,
-    const scalarField& edgeClearances
+    const collisionModel& collision
 )
 {
     // Most steps of a dilute scene have no chain off: no clock read (a
@@ -564,15 +562,23 @@ void Foam::polymer::contactProjection::correct
         return;
     }
     counts_.reprojected += nOff;
-    // The clearances only where they are the beads' and rods' of these
-    // chains
-    wallClearances_ =
-        (wallClearances.size() == chains_.nBeads())
-      ? wallClearances : scalarField::null();
-    edgeClearances_ = edgeClearances;
+
+    // What the collisions know, asked for only on a step with chains to
+    // project; the beads' clearances only where they are these chains'
+    tmp<scalarField> wallClearances(collision.wallClearances());
+    wallClearances_.transfer(wallClearances.ref());
+    if (wallClearances_.size() != chains_.nBeads())
+    {
+        wallClearances_.clear();
+    }
+    tmp<scalarField> edgeClearances(collision.edgeClearances());
+    edgeClearances_.transfer(edgeClearances.ref());
 
     cpuTimeCxx timer;
-    project(positionsStart, deltaT, time, wall, candidates, moved);
+    project
+    (
+        positionsStart, deltaT, time, wall, collision.candidatePairs(), moved
+    );
     counts_.seconds += timer.cpuTimeIncrement();
 }
 

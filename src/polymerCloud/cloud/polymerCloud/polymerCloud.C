@@ -341,9 +341,7 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
             deltaT,
             time,
             wall_.get(),
-            collision_->candidatePairs(),
-            collision_->wallClearances(),
-            collision_->edgeClearances()
+            collision_()
         );
         pathTimes_.lap(pathTimes::reproject);
     }
