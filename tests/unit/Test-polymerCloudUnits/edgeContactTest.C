@@ -61,8 +61,16 @@ bool cutsTheCorner(const point& p, const point& q)
 
 
 // A random rod of unit length near the corner, in the fluid and not
-// cutting it
-void rodNearTheCorner(std::mt19937_64& gen, point& p0, point& p1)
+// cutting it, and its beads' velocities: up to a rod length a unit step,
+// the second within 0.3 of the first's
+void dimerNearTheCorner
+(
+    std::mt19937_64& gen,
+    point& p0,
+    point& p1,
+    vector& v0,
+    vector& v1
+)
 {
     std::uniform_real_distribution<scalar> uniform(-1, 1);
     do
@@ -79,6 +87,8 @@ void rodNearTheCorner(std::mt19937_64& gen, point& p0, point& p1)
      || (p1.x() > 4.99 && p1.y() > 4.99)
      || cutsTheCorner(p0, p1)
     );
+    v0 = vector(uniform(gen), uniform(gen), 0);
+    v1 = v0 + 0.3*vector(uniform(gen), uniform(gen), 0);
 }
 
 
@@ -167,7 +177,6 @@ TEST(wallEdges, RandomRodsSweptPastTheCornerDoNotCutIt)
     autoPtr<wallModel> wall = newWall(*mesh, "meshFaces");
     const PtrList<chainType> types(oneType(2, 1, 1, 1, 1));
     std::mt19937_64 gen(5);
-    std::uniform_real_distribution<scalar> uniform(-1, 1);
 
     for (const word impulse : {"constrained", "dumbbell"})
     {
@@ -176,9 +185,8 @@ TEST(wallEdges, RandomRodsSweptPastTheCornerDoNotCutIt)
         for (label trial = 0; trial < 2000; ++trial)
         {
             point p0, p1;
-            rodNearTheCorner(gen, p0, p1);
-            const vector v0(uniform(gen), uniform(gen), 0);
-            const vector v1 = v0 + 0.3*vector(uniform(gen), uniform(gen), 0);
+            vector v0, v1;
+            dimerNearTheCorner(gen, p0, p1, v0, v1);
 
             polymerChains chains(types);
             chains.append
@@ -248,9 +256,8 @@ TEST(wallEdges, TheCollisionsClearancesHoldNoWallNorEdge)
         for (label trial = 0; trial < 500; ++trial)
         {
             point p0, p1;
-            rodNearTheCorner(gen, p0, p1);
-            const vector v0(uniform(gen), uniform(gen), 0);
-            const vector v1 = v0 + 0.3*vector(uniform(gen), uniform(gen), 0);
+            vector v0, v1;
+            dimerNearTheCorner(gen, p0, p1, v0, v1);
             polymerChains chains(types);
             chains.append
             (
