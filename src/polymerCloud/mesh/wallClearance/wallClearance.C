@@ -40,6 +40,7 @@ void Foam::polymer::wallClearance::layVoxels(const boundaryFaces& faces)
     voxelSize_ = min(std::pow(volume/wanted, 1.0/nThick), thinnest/8);
     voxelSize_ = max(voxelSize_, std::pow(volume/maxVoxels, 1.0/nThick));
     voxelSize_ = max(voxelSize_, VSMALL);
+    voxelsPerLength_ = 1/voxelSize_;
 
     for (direction d = 0; d < vector::nComponents; ++d)
     {
@@ -85,6 +86,7 @@ Foam::polymer::wallClearance::wallClearance(const boundaryFaces& faces)
     edges_(nullptr),
     bounds_(),
     voxelSize_(1),
+    voxelsPerLength_(1),
     nVoxels_(Zero),
     clearance_()
 {
