@@ -269,6 +269,29 @@ void Foam::polymer::polymerCloud::injectChains(const scalar time)
 }
 
 
+void Foam::polymer::polymerCloud::stopIfEmpty(const scalar time) const
+{
+    // The rest of the run would step an empty domain. The time's writeNow,
+    // as OpenFOAM's abort function object sets it: the next step is the
+    // last, and written
+    const Time& runTime = mesh_.time();
+    if
+    (
+        !solution_.stopWhenEmpty()
+     || runTime.stopAt() == Time::stopAtControls::saWriteNow
+     || returnReduce(chains_.nChains(), sumOp<label>())
+     || !injection_->finished(time)
+    )
+    {
+        return;
+    }
+    Info<< name() << ": no chain left in the domain at time " << time
+        << ", and none to inject: the run ends at the next time step,"
+        << " written (solution stopWhenEmpty)" << endl;
+    runTime.stopAt(Time::stopAtControls::saWriteNow);
+}
+
+
 void Foam::polymer::polymerCloud::evolvePolymerStep
 (
     const scalar deltaT,
@@ -470,6 +493,8 @@ void Foam::polymer::polymerCloud::evolve()
         function.postEvolve();
     }
     pathTimes_.lap(pathTimes::functions);
+
+    stopIfEmpty(time);
 }
 
 

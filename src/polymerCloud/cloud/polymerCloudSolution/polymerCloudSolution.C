@@ -97,7 +97,8 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
             "<most rounds of contact constraints before rigid impact zones,"
             " a whole number; 0: zones at once>"
         )
-    )
+    ),
+    stopWhenEmpty_(solution.getOrDefault<bool>("stopWhenEmpty", false))
 {
     checkedInput::onlyKeywords
     (
@@ -105,7 +106,7 @@ Foam::polymer::polymerCloudSolution::polymerCloudSolution
         {
             "active", "seed", "rodLengthCheck",
             "maxNeighbourDisplacement", "maxSubCycles",
-            "contactTreatment", "maxContactRounds"
+            "contactTreatment", "maxContactRounds", "stopWhenEmpty"
         },
         "the cloud's solution"
     );

@@ -92,6 +92,20 @@ void Foam::polymer::injectionModels::boxInjection::checkTypes
 }
 
 
+bool Foam::polymer::injectionModels::boxInjection::finished
+(
+    const scalar time
+) const
+{
+    // The count due by time, floor(rate (min(t, end) - start)), already
+    // the count due by end (as scalars: end may be GREAT)
+    return
+        time > start_
+     && std::floor(rate_*(min(time, end_) - start_) + 1e-9)
+     >= std::floor(rate_*(end_ - start_) + 1e-9);
+}
+
+
 Foam::label Foam::polymer::injectionModels::boxInjection::inject
 (
     polymerChains& chains,
