@@ -75,7 +75,9 @@ Foam::polymer::forceModels::electrophoretic::electrophoretic
             mesh.time().timeName(),
             mesh,
             IOobject::NO_READ,
-            IOobject::AUTO_WRITE
+            coeffDict_.getOrDefault<bool>("writeField", true)
+          ? IOobject::AUTO_WRITE
+          : IOobject::NO_WRITE
         ),
         mesh,
         dimensionedVector(potential_.dimensions()/dimLength, Zero)
