@@ -92,17 +92,22 @@ void Foam::polymer::injectionModels::boxInjection::checkTypes
 }
 
 
+Foam::scalar Foam::polymer::injectionModels::boxInjection::dueBy
+(
+    const scalar t
+) const
+{
+    // A scalar: with end GREAT the count by end is beyond a label
+    return std::floor(rate_*(min(t, end_) - start_) + 1e-9);
+}
+
+
 bool Foam::polymer::injectionModels::boxInjection::finished
 (
     const scalar time
 ) const
 {
-    // The count due by time, floor(rate (min(t, end) - start)), already
-    // the count due by end (as scalars: end may be GREAT)
-    return
-        time > start_
-     && std::floor(rate_*(min(time, end_) - start_) + 1e-9)
-     >= std::floor(rate_*(end_ - start_) + 1e-9);
+    return time > start_ && dueBy(time) >= dueBy(end_);
 }
 
 
@@ -116,12 +121,10 @@ Foam::label Foam::polymer::injectionModels::boxInjection::inject
 {
     // Chains due by the end of the step, and by its start: the difference
     const scalar dt = mesh_.time().deltaTValue();
-    auto dueBy = [&](const scalar t)
-    {
-        return label(std::floor(rate_*(min(t, end_) - start_) + 1e-9));
-    };
     const label nNew =
-        (time <= start_) ? 0 : dueBy(time) - max(dueBy(time - dt), label(0));
+        (time <= start_)
+      ? 0
+      : label(dueBy(time)) - max(label(dueBy(time - dt)), label(0));
 
     // Every processor draws the same chains, each those it may own (the
     // cloud keeps each on the processor holding its reference bead)
