@@ -62,10 +62,12 @@ bool cutsTheCorner(const point& p, const point& q)
 
 // A random rod of unit length near the corner, in the fluid and not
 // cutting it, and its beads' velocities: up to a rod length a unit step,
-// the second within 0.3 of the first's
+// the second within 0.3 of the first's. Appended to chains (type 0) at the
+// end of that step, p + v, as the step's unconstrained positions
 void dimerNearTheCorner
 (
     std::mt19937_64& gen,
+    polymerChains& chains,
     point& p0,
     point& p1,
     vector& v0,
@@ -89,6 +91,10 @@ void dimerNearTheCorner
     );
     v0 = vector(uniform(gen), uniform(gen), 0);
     v1 = v0 + 0.3*vector(uniform(gen), uniform(gen), 0);
+    chains.append
+    (
+        0, 0, List<point>({p0 + v0, p1 + v1}), List<vector>({v0, v1})
+    );
 }
 
 
@@ -186,13 +192,8 @@ TEST(wallEdges, RandomRodsSweptPastTheCornerDoNotCutIt)
         {
             point p0, p1;
             vector v0, v1;
-            dimerNearTheCorner(gen, p0, p1, v0, v1);
-
             polymerChains chains(types);
-            chains.append
-            (
-                0, 0, List<point>({p0 + v0, p1 + v1}), List<vector>({v0, v1})
-            );
+            dimerNearTheCorner(gen, chains, p0, p1, v0, v1);
             const bool cut = cutsTheCorner(p0 + v0, p1 + v1);
             nCutBefore += cut;
 
@@ -257,12 +258,8 @@ TEST(wallEdges, TheCollisionsClearancesHoldNoWallNorEdge)
         {
             point p0, p1;
             vector v0, v1;
-            dimerNearTheCorner(gen, p0, p1, v0, v1);
             polymerChains chains(types);
-            chains.append
-            (
-                0, 0, List<point>({p0 + v0, p1 + v1}), List<vector>({v0, v1})
-            );
+            dimerNearTheCorner(gen, chains, p0, p1, v0, v1);
             collisionModels::elasticRods model(elasticRodsDict("constrained"));
             model.correct(chains, List<point>({p0, p1}), 1, 1, wall.get());
 
