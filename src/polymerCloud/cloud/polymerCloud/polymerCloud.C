@@ -273,14 +273,15 @@ void Foam::polymer::polymerCloud::stopIfEmpty(const scalar time) const
 {
     // The rest of the run would step an empty domain. The time's writeNow,
     // as OpenFOAM's abort function object sets it: the next step is the
-    // last, and written
+    // last, and written. The chains are counted over the processors (a
+    // reduction) only once the injection is done
     const Time& runTime = mesh_.time();
     if
     (
         !solution_.stopWhenEmpty()
      || runTime.stopAt() == Time::stopAtControls::saWriteNow
-     || returnReduce(chains_.nChains(), sumOp<label>())
      || !injection_->finished(time)
+     || returnReduce(chains_.nChains(), sumOp<label>())
     )
     {
         return;
