@@ -284,7 +284,7 @@ void Foam::polymer::collisionModels::elasticRods::correct
         {
             forAll(rods_.rods(), rod)
             {
-                predictEdges(rod, sweep(rod, 0, deltaT), 0, deltaT);
+                predictEdges(rod, 0, deltaT);
             }
         }
     }

@@ -36,7 +36,6 @@ Foam::label Foam::polymer::collisionModels::elasticRods::edgePair
 void Foam::polymer::collisionModels::elasticRods::predictEdges
 (
     const label rod,
-    const boundBox& box,
     const scalar t,
     const scalar dt
 )
@@ -64,11 +63,13 @@ void Foam::polymer::collisionModels::elasticRods::predictEdges
         edgeDistanceBudget_[rod] = edgeBudget_[rod];
         return;
     }
-    // Else the edges near the path, looked up in a box wider than the
-    // path's by a margin: the edges beyond it are farther than that. The
+    // Else the edges near the path (its swept box, formed only here: most
+    // rods are cleared above), looked up in a box wider than the path's
+    // by a margin: the edges beyond it are farther than that. The
     // rod keeps a budget while every edge has one: the margin, the
     // clearance of an edge it stays apart from, the drift that keeps V's
     // sign with an edge found uncrossed; none with an edge it meets
+    const boundBox box(sweep(rod, t, dt));
     const scalar margin = growMargin(rod, t, dt);
     const vector fat(vector::uniform(margin));
     scalar budget = margin;

@@ -407,7 +407,7 @@ void Foam::polymer::collisionModels::elasticRods::growBoxes
          && grid_.grow(rod, box, growMargin(rod, t, dt));
         if (edges && !(rodDrift(rod) < edgeBudget_[rod]))
         {
-            predictEdges(rod, box, t, dt);
+            predictEdges(rod, t, dt);
         }
         if (grown || !(rodDrift(rod) < rodLimit_[rod]))
         {
