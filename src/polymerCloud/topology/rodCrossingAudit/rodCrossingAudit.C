@@ -373,34 +373,41 @@ Foam::polymer::rodCrossingAudit::checkPath
         return List<crossing>();
     }
 
-    // Boxes swept over the whole path
+    // Boxes swept over the whole path, the rods whose beads move along
+    // it (a pair of two rods that stay put keeps its V and cannot cross),
+    // and how far a point of each rod moves from its first configuration
+    // at most: the sum over the pieces of its beads' larger displacement.
+    // Most rods of a re-projection's audit stay put (few chains were
+    // re-projected): such a rod's box is its beads' and its reach zero,
+    // with no piece's displacements or square roots
+    boolList moves(rods_.size(), false);
+    scalarList reach(rods_.size(), Zero);
     List<boundBox> boxes(rods_.size());
     forAll(rods_, rodi)
     {
-        boxes[rodi] = boundBox(path[0][rods_[rodi].first()]);
-        for (const UList<point>& configuration : path)
-        {
-            boxes[rodi].add(configuration[rods_[rodi].first()]);
-            boxes[rodi].add(configuration[rods_[rodi].second()]);
-        }
-    }
-
-    // Rods whose beads stay put along the whole path (a pair of two such
-    // rods keeps its V and cannot cross), and how far a point of each rod
-    // moves from its first configuration at most: the sum over the pieces
-    // of its beads' larger displacement
-    boolList moves(rods_.size(), false);
-    scalarList reach(rods_.size(), Zero);
-    forAll(rods_, rodi)
-    {
         const label i = rods_[rodi].first(), j = rods_[rodi].second();
+        boxes[rodi] = boundBox(path[0][i]);
+        boxes[rodi].add(path[0][j]);
+        for (label k = 1; k < path.size(); ++k)
+        {
+            moves[rodi] =
+                moves[rodi] || path[k][i] != path[0][i]
+             || path[k][j] != path[0][j];
+        }
+        if (!moves[rodi])
+        {
+            continue;
+        }
         for (label k = 0; k + 1 < path.size(); ++k)
         {
-            const vector di(path[k + 1][i] - path[k][i]);
-            const vector dj(path[k + 1][j] - path[k][j]);
-            moves[rodi] =
-                moves[rodi] || di != vector::zero || dj != vector::zero;
-            reach[rodi] += max(mag(di), mag(dj));
+            boxes[rodi].add(path[k + 1][i]);
+            boxes[rodi].add(path[k + 1][j]);
+            reach[rodi] +=
+                max
+                (
+                    mag(path[k + 1][i] - path[k][i]),
+                    mag(path[k + 1][j] - path[k][j])
+                );
         }
     }
 
@@ -425,11 +432,12 @@ Foam::polymer::rodCrossingAudit::checkPath
         checkNear(grid(), boxes, moves, origin, held, reach, path, found);
     }
 
-    // The images, where the rods' box meets its translate
-    boundBox all(boxes.size() ? boxes[0] : boundBox());
-    for (const boundBox& box : boxes)
+    // The images, where the rods' box meets its translate (none without
+    // the lattice: the rods' box is not formed)
+    boundBox all(boxes.size() && shifts_.size() ? boxes[0] : boundBox());
+    for (label rodi = 1; rodi < boxes.size() && shifts_.size(); ++rodi)
     {
-        all.add(box);
+        all.add(boxes[rodi]);
     }
     for (const vector& shift : shifts_)
     {
@@ -539,16 +547,22 @@ void Foam::polymer::rodCrossingAudit::checkListed
 ) const
 {
     // The pairs the grid's look-ups would take, by the same tests: each
-    // listed pair is one unordered pair of rods
+    // listed pair is one unordered pair of rods. Most have no rod in
+    // origin (few chains were re-projected): that is tested first, before
+    // the translation and the other tests are read
     const UList<labelPair>& pairs = candidates_.pairs();
     forAll(pairs, pairi)
     {
-        if (candidates_.shift(pairi) != vector::zero)
+        const label a = min(pairs[pairi].first(), pairs[pairi].second());
+        const label b = max(pairs[pairi].first(), pairs[pairi].second());
+        if
+        (
+            !(origin[a] || origin[b])
+         || candidates_.shift(pairi) != vector::zero
+        )
         {
             continue;
         }
-        const label a = min(pairs[pairi].first(), pairs[pairi].second());
-        const label b = max(pairs[pairi].first(), pairs[pairi].second());
         if (toCheck(a, b, boxes, moves, origin))
         {
             checkIfNear(a, b, reach, path, found);
