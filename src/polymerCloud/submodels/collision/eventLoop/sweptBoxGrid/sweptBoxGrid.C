@@ -70,6 +70,7 @@ Foam::polymer::sweptBoxGrid::sweptBoxGrid()
     nCells_(Zero),
     cellStart_(),
     cellRods_(),
+    cellFirst_(),
     grownRods_(),
     grown_(),
     pairs_(),
@@ -362,9 +363,10 @@ void Foam::polymer::sweptBoxGrid::forCells(const label rod, Visit visit)
         for (label j = lower.y(); j <= upper.y(); ++j)
         {
             const label row = (i*nCells_.y() + j)*nCells_.z();
+            const unsigned firstXY = (i == lower.x()) | (j == lower.y()) << 1;
             for (label k = lower.z(); k <= upper.z(); ++k)
             {
-                visit(row + k);
+                visit(row + k, firstXY | (k == lower.z()) << 2);
             }
         }
     }
@@ -383,19 +385,34 @@ void Foam::polymer::sweptBoxGrid::fillCells()
     for (label rod = 0; rod < nRods; ++rod)
     {
         cellRange(box_[rod], firstCell_[rod], lastCell_[rod]);
-        forCells(rod, [this](const label c) { ++cellStart_[c + 1]; });
+        forCells
+        (
+            rod,
+            [this](const label c, unsigned) { ++cellStart_[c + 1]; }
+        );
     }
     for (label c = 0; c < nCells; ++c)
     {
         cellStart_[c + 1] += cellStart_[c];
     }
     cellRods_.setSize(cellStart_[nCells]);
+    cellFirst_.setSize(cellStart_[nCells]);
+    // Through the lists' data: a byte stored may alias anything, which
+    // would have every list's address read again after it
+    label* const slot = cellStart_.data();
+    label* const cellRod = cellRods_.data();
+    unsigned char* const cellFirst = cellFirst_.data();
     for (label rod = 0; rod < nRods; ++rod)
     {
         forCells
         (
             rod,
-            [this, rod](const label c) { cellRods_[cellStart_[c]++] = rod; }
+            [=](const label c, const unsigned first)
+            {
+                const label entry = slot[c]++;
+                cellRod[entry] = rod;
+                cellFirst[entry] = first;
+            }
         );
     }
     // Each cell's start has moved to the next cell's: back by one
@@ -411,42 +428,40 @@ void Foam::polymer::sweptBoxGrid::addCellPairs()
 {
     // The pairs of each cell's rods whose boxes meet, a pair only in the
     // first cell both span: each found once, as the later rod's look-up
-    // of its own box would find it. Kept by a count, as query keeps them
-    label c = 0;
-    for (label i = 0; i < nCells_.x(); ++i)
+    // of its own box would find it. Kept by a count, as query keeps them.
+    // Both boxes span the cell, so along each axis the later of their
+    // first cells is this cell's where the cell is the first of either:
+    // the entries' bits, together all three, tell the first shared cell
+    // without reading the rods' first cells
+    const label nCells = nCells_.x()*nCells_.y()*nCells_.z();
+    for (label c = 0; c < nCells; ++c)
     {
-        for (label j = 0; j < nCells_.y(); ++j)
+        const label start = cellStart_[c];
+        const label n = cellStart_[c + 1] - start;
+        if (n < 2)
         {
-            for (label k = 0; k < nCells_.z(); ++k, ++c)
+            continue;
+        }
+        if (met_.size() < size_t(n))
+        {
+            met_.resize(2*n);
+        }
+        for (label p = start; p < start + n; ++p)
+        {
+            const label a = cellRods_[p];
+            const unsigned firstA = cellFirst_[p];
+            label nMet = 0;
+            for (label q = p + 1; q < start + n; ++q)
             {
-                const label start = cellStart_[c];
-                const label n = cellStart_[c + 1] - start;
-                if (n < 2)
-                {
-                    continue;
-                }
-                if (met_.size() < size_t(n))
-                {
-                    met_.resize(2*n);
-                }
-                for (label p = start; p < start + n; ++p)
-                {
-                    const label a = cellRods_[p];
-                    const Vector<label>& firstA = firstCell_[a];
-                    label nMet = 0;
-                    for (label q = p + 1; q < start + n; ++q)
-                    {
-                        const label b = cellRods_[q];
-                        met_[nMet] = b;
-                        nMet +=
-                            firstShared(firstA, firstCell_[b], i, j, k)
-                          & boxesMeet(box_[a], box_[b]);
-                    }
-                    for (label m = 0; m < nMet; ++m)
-                    {
-                        addPair(met_[m], a, 0, Zero);
-                    }
-                }
+                const label b = cellRods_[q];
+                met_[nMet] = b;
+                nMet +=
+                    ((firstA | cellFirst_[q]) == 7u)
+                  & boxesMeet(box_[a], box_[b]);
+            }
+            for (label m = 0; m < nMet; ++m)
+            {
+                addPair(met_[m], a, 0, Zero);
             }
         }
     }
