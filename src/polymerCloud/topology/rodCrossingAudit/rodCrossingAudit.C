@@ -547,9 +547,9 @@ void Foam::polymer::rodCrossingAudit::checkListed
 ) const
 {
     // The pairs the grid's look-ups would take, by the same tests: each
-    // listed pair is one unordered pair of rods. Most have no rod in
-    // origin (few chains were re-projected): that is tested first, before
-    // the translation and the other tests are read
+    // listed pair is one unordered pair of rods. A pair with no rod in
+    // origin (none of the chains re-projected since the last pass) is
+    // passed over first, before its translation and boxes are read
     const UList<labelPair>& pairs = candidates_.pairs();
     forAll(pairs, pairi)
     {
