@@ -432,12 +432,15 @@ Foam::polymer::rodCrossingAudit::checkPath
         checkNear(grid(), boxes, moves, origin, held, reach, path, found);
     }
 
-    // The images, where the rods' box meets its translate (none without
-    // the lattice: the rods' box is not formed)
-    boundBox all(boxes.size() && shifts_.size() ? boxes[0] : boundBox());
-    for (label rodi = 1; rodi < boxes.size() && shifts_.size(); ++rodi)
+    // The images, where the rods' box meets its translate (formed only
+    // with the lattice)
+    boundBox all;
+    if (shifts_.size())
     {
-        all.add(boxes[rodi]);
+        for (const boundBox& box : boxes)
+        {
+            all.add(box);
+        }
     }
     for (const vector& shift : shifts_)
     {
