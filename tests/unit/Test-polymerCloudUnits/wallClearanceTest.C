@@ -26,6 +26,8 @@ Description
       the least of the faces' own nearest distances, to the bit, at 20000
       random points of the fluid, half of them within a tenth of a wall,
       within the voxels' search radius and without a limit;
+    - likewise on a copy of the channel whose points are moved at random
+      by up to a tenth of a cell along each axis (warped faces);
     - the first face a segment enters (boundaryFaces::firstEntered, which
       passes over faces whose plane band the segment's end does not
       reach) is the first of every face's own intersections along it, at
@@ -149,6 +151,84 @@ TEST(wallClearance, NearestFaceIsTheLeastOfTheFaces)
             ASSERT_EQ(own.distance(), least) << "at " << str(p);
             ASSERT_EQ(mag(nearest.hitPoint() - own.rawPoint()), 0)
                 << "at " << str(p);
+        }
+    }
+    EXPECT_GT(withinRadius, 10000);
+}
+
+
+TEST(wallClearance, NearestWarpedFaceIsTheLeastOfTheFaces)
+{
+    // The L channel with every point moved by up to a tenth of a cell
+    // along each axis: warped faces, whose bounds (boundaryFaces::nearest
+    // passes over a face by its plane less its warp and by its centre's
+    // distance less its radius, along the plane and across it) must
+    // still never exceed the face's own nearest distance
+    const fvMesh* mesh = meshOf("wallL");
+    ASSERT_TRUE(mesh);
+    std::mt19937_64 engine(23);
+    std::uniform_real_distribution<scalar> u(-1, 1);
+    pointField points(mesh->points());
+    for (point& p : points)
+    {
+        p += 0.1*vector(u(engine), u(engine), u(engine));
+    }
+    polyMesh warped
+    (
+        IOobject
+        (
+            "warped",
+            mesh->time().timeName(),
+            mesh->time(),
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        std::move(points),
+        faceList(mesh->faces()),
+        labelList(mesh->faceOwner()),
+        labelList(mesh->faceNeighbour()),
+        false
+    );
+    List<polyPatch*> patches(mesh->boundaryMesh().size());
+    forAll(patches, patchi)
+    {
+        patches[patchi] =
+            mesh->boundaryMesh()[patchi].clone(warped.boundaryMesh()).ptr();
+    }
+    warped.addPatches(patches);
+
+    const boundaryFaces faces(warped, 0);
+    const wallClearance clearance(faces);
+    const scalar searched = 4*std::sqrt(3.0)*clearance.voxelSize();
+    const faceList& all = faces.faces();
+    label withinRadius = 0;
+    std::uniform_real_distribution<scalar> v(0, 1);
+    for (label i = 0; i < 20000; ++i)
+    {
+        point p(fluidPoint(engine));
+        if (i % 2)
+        {
+            // Within a tenth of the floor's mean plane, either side
+            p.z() = 0.2*v(engine) - 0.1;
+        }
+        scalar least = GREAT;
+        for (const face& f : all)
+        {
+            least = min(least, f.nearestPoint(p, faces.points()).distance());
+        }
+        for (const scalar maxDistSqr : {GREAT, sqr(searched)})
+        {
+            const pointIndexHit nearest = faces.nearest(p, maxDistSqr);
+            ASSERT_EQ(nearest.hit(), sqr(least) < maxDistSqr)
+                << "at " << str(p);
+            if (!nearest.hit())
+            {
+                continue;
+            }
+            withinRadius += (maxDistSqr < GREAT);
+            const pointHit own =
+                all[nearest.index()].nearestPoint(p, faces.points());
+            ASSERT_EQ(own.distance(), least) << "at " << str(p);
         }
     }
     EXPECT_GT(withinRadius, 10000);

@@ -71,6 +71,34 @@ struct faceBounds
 
         return Foam::max(plane, centre);
     }
+
+    // A distance from the point p within which face i does not lie,
+    // tighter than segmentBound's for a point beside the face: a point of
+    // the face is at least |h| less the warp off the plane (h: p's
+    // distance from it) and, along the plane, at least the distance of
+    // p's projection from the centre less the radius (less a relative
+    // 1e-7 of p's distance from the centre, far above the round-off of
+    // that projection's length where h takes nearly all of it)
+    Foam::scalar pointBound(const Foam::label i, const Foam::point& p) const
+    {
+        const Foam::vector d(p - centres[i]);
+        const Foam::scalar h = normals[i] & d;
+        const Foam::scalar dSqr = Foam::magSqr(d);
+        const Foam::scalar dMag = std::sqrt(dSqr);
+        const Foam::scalar across =
+            Foam::max(Foam::mag(h) - warps[i], 0);
+        const Foam::scalar along = Foam::max
+        (
+            std::sqrt(Foam::max(dSqr - Foam::sqr(h), 0))
+          - radii[i] - 1e-7*dMag,
+            0
+        );
+        return Foam::max
+        (
+            dMag - radii[i],
+            std::sqrt(Foam::sqr(across) + Foam::sqr(along))
+        );
+    }
 };
 
 
@@ -171,8 +199,7 @@ public:
     {
         for (const Foam::label index : indices)
         {
-            const Foam::scalar bound =
-                bounds_.segmentBound(index, sample, sample);
+            const Foam::scalar bound = bounds_.pointBound(index, sample);
             if (bound > 0 && Foam::sqr(bound) > nearestDistSqr*(1 + 1e-9))
             {
                 continue;
