@@ -448,12 +448,12 @@ void Foam::polymer::boundaryFaces::buildTree()
         radii_[facei] = radius;
     }
 
-    List<boundBox> faceBoxes(faces_.size());
+    faceBoxes_.setSize(faces_.size());
     forAll(faces_, facei)
     {
-        faceBoxes[facei] = boundBox(points_, faces_[facei], false);
+        faceBoxes_[facei] = boundBox(points_, faces_[facei], false);
     }
-    faceGrid_.reset(new boxGrid(faceBoxes));
+    faceGrid_.reset(new boxGrid(faceBoxes_));
 
     const treeBoundBox bb(treeBounds(points_));
     tree_.reset
@@ -489,7 +489,8 @@ Foam::polymer::boundaryFaces::boundaryFaces
     radii_(),
     facePatch_(),
     tree_(),
-    faceGrid_()
+    faceGrid_(),
+    faceBoxes_()
 {
     addOwnFaces(mesh);
     addHalo(mesh, reach);
@@ -558,6 +559,12 @@ Foam::scalar Foam::polymer::boundaryFaces::pathClearance
         box,
         [&](const label facei)
         {
+            // The octree's own first test of a face against a box: its
+            // points' box must overlap it (the grid offers other faces)
+            if (!faceBoxes_[facei].overlaps(box))
+            {
+                return;
+            }
             const scalar bound = bounds.segmentBound(facei, p0, p1);
             if (bound < lowest && shapes.overlaps(facei, box))
             {
