@@ -103,6 +103,8 @@ Foam::polymer::collisionModels::elasticRods::elasticRods(const dictionary& dict)
     drift_(),
     pairBudget_(),
     rodLimit_(),
+    boxSlack_(),
+    slackRoundOff_(0),
     rodClosePairs_(),
     pairListed_(),
     pairStamp_(),
@@ -258,12 +260,20 @@ void Foam::polymer::collisionModels::elasticRods::correct
     // scene take an impulse through their chain within the step: grown
     // at once, their boxes need not be inserted a second time then
     List<boundBox> boxes(rods_.size());
+    boxSlack_.resize(rods_.size());
+    boundBox bounds;
     forAll(boxes, rod)
     {
         const boundBox swept(sweep(rod, 0, deltaT));
-        const vector fat(vector::uniform(growMargin(rod, 0, deltaT)));
+        boxSlack_[rod] = growMargin(rod, 0, deltaT);
+        const vector fat(vector::uniform(boxSlack_[rod]));
         boxes[rod] = boundBox(swept.min() - fat, swept.max() + fat);
+        bounds.add(boxes[rod]);
     }
+    // The paths' points are computed again at each event (positionAt):
+    // a few roundings of the coordinates, far below a relative 1e-12
+    slackRoundOff_ =
+        1e-12*(cmptMax(cmptMag(bounds.min())) + cmptMax(cmptMag(bounds.max())));
     grid_.build(rods_, std::move(boxes), lattice_);
     resetPredictions(nBeads);
     contacts_.clear();

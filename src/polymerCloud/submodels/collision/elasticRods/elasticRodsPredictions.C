@@ -388,6 +388,42 @@ void Foam::polymer::collisionModels::elasticRods::stampRods
 }
 
 
+bool Foam::polymer::collisionModels::elasticRods::growBox
+(
+    const label rod,
+    const scalar t,
+    const scalar dt
+)
+{
+    // A point of the rod's path strays from the path its box was formed
+    // round by at most the rod's drift since then: within the box's gap
+    // from that path, the box holds it (no sweep). Else swept: a box that
+    // holds the new path keeps the larger of the two slacks; one that
+    // does not grows round it, by the margin
+    const scalar drift = rodDrift(rod);
+    if (drift + slackRoundOff_ < boxSlack_[rod])
+    {
+        return false;
+    }
+    const boundBox box(sweep(rod, t, dt));
+    const boundBox& held = grid_.boxes()[rod];
+    if (grid_.holds(rod, box))
+    {
+        const scalar gap = min
+        (
+            cmptMin(box.min() - held.min()),
+            cmptMin(held.max() - box.max())
+        );
+        boxSlack_[rod] = max(boxSlack_[rod], drift + gap);
+        return false;
+    }
+    // The margin (two square roots) only for a box that grows
+    const scalar margin = growMargin(rod, t, dt);
+    boxSlack_[rod] = drift + margin;
+    return grid_.grow(rod, box, margin);
+}
+
+
 void Foam::polymer::collisionModels::elasticRods::growBoxes
 (
     const scalar t,
@@ -400,11 +436,7 @@ void Foam::polymer::collisionModels::elasticRods::growBoxes
     rodsBeyondLimit_.clear();
     for (const label rod : rodsToPredict_)
     {
-        const boundBox box(sweep(rod, t, dt));
-        // The margin (two square roots) only for a box that grows
-        const bool grown =
-            !grid_.holds(rod, box)
-         && grid_.grow(rod, box, growMargin(rod, t, dt));
+        const bool grown = growBox(rod, t, dt);
         if (edges && !(rodDrift(rod) < edgeBudget_[rod]))
         {
             predictEdges(rod, t, dt);
