@@ -273,7 +273,8 @@ void Foam::polymer::collisionModels::elasticRods::correct
     // The paths' points are computed again at each event (positionAt):
     // a few roundings of the coordinates, far below a relative 1e-12
     slackRoundOff_ =
-        1e-12*(cmptMax(cmptMag(bounds.min())) + cmptMax(cmptMag(bounds.max())));
+        1e-12
+       *(cmptMax(cmptMag(bounds.min())) + cmptMax(cmptMag(bounds.max())));
     grid_.build(rods_, std::move(boxes), lattice_);
     resetPredictions(nBeads);
     contacts_.clear();
