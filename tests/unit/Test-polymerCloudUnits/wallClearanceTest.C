@@ -74,6 +74,58 @@ point fluidPoint(std::mt19937_64& engine)
     }
 }
 
+
+// At 20000 random points of the fluid, every other one at a height drawn
+// from [zLow, zHigh] (near the floor), the nearest face that
+// boundaryFaces::nearest finds, within the voxels' search radius and
+// without a limit, is at the least of every face's own nearest distance
+// (OpenFOAM's fan of triangles about the centre), to the bit, and its
+// point is the found face's own nearest point; the points found within
+// the radius are counted
+void expectNearestIsLeast
+(
+    const boundaryFaces& faces,
+    const scalar searched,
+    const scalar zLow,
+    const scalar zHigh,
+    std::mt19937_64& engine,
+    label& withinRadius
+)
+{
+    std::uniform_real_distribution<scalar> u(zLow, zHigh);
+    const faceList& all = faces.faces();
+    withinRadius = 0;
+    for (label i = 0; i < 20000; ++i)
+    {
+        point p(fluidPoint(engine));
+        if (i % 2)
+        {
+            p.z() = u(engine);
+        }
+        scalar least = GREAT;
+        for (const face& f : all)
+        {
+            least = min(least, f.nearestPoint(p, faces.points()).distance());
+        }
+        for (const scalar maxDistSqr : {GREAT, sqr(searched)})
+        {
+            const pointIndexHit nearest = faces.nearest(p, maxDistSqr);
+            ASSERT_EQ(nearest.hit(), sqr(least) < maxDistSqr)
+                << "at " << str(p);
+            if (!nearest.hit())
+            {
+                continue;
+            }
+            withinRadius += (maxDistSqr < GREAT);
+            const pointHit own =
+                all[nearest.index()].nearestPoint(p, faces.points());
+            ASSERT_EQ(own.distance(), least) << "at " << str(p);
+            ASSERT_EQ(mag(nearest.hitPoint() - own.rawPoint()), 0)
+                << "at " << str(p);
+        }
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -116,43 +168,10 @@ TEST(wallClearance, NearestFaceIsTheLeastOfTheFaces)
     const wallClearance clearance(faces);
     const scalar searched = 4*std::sqrt(3.0)*clearance.voxelSize();
 
-    // Every face's own nearest point (OpenFOAM's fan of triangles about
-    // the centre): the least distance, and a found point that is the
-    // found face's own nearest point
+    // Every other point within a tenth of the floor, where a wall is near
     std::mt19937_64 engine(17);
-    std::uniform_real_distribution<scalar> u(0, 1);
     label withinRadius = 0;
-    for (label i = 0; i < 20000; ++i)
-    {
-        point p(fluidPoint(engine));
-        if (i % 2)
-        {
-            // Within a tenth of the floor, where a wall is near
-            p.z() = 0.1*u(engine);
-        }
-        const faceList& all = faces.faces();
-        scalar least = GREAT;
-        for (const face& f : all)
-        {
-            least = min(least, f.nearestPoint(p, faces.points()).distance());
-        }
-        for (const scalar maxDistSqr : {GREAT, sqr(searched)})
-        {
-            const pointIndexHit nearest = faces.nearest(p, maxDistSqr);
-            ASSERT_EQ(nearest.hit(), sqr(least) < maxDistSqr)
-                << "at " << str(p);
-            if (!nearest.hit())
-            {
-                continue;
-            }
-            withinRadius += (maxDistSqr < GREAT);
-            const pointHit own =
-                all[nearest.index()].nearestPoint(p, faces.points());
-            ASSERT_EQ(own.distance(), least) << "at " << str(p);
-            ASSERT_EQ(mag(nearest.hitPoint() - own.rawPoint()), 0)
-                << "at " << str(p);
-        }
-    }
+    expectNearestIsLeast(faces, searched, 0, 0.1, engine, withinRadius);
     EXPECT_GT(withinRadius, 10000);
 }
 
@@ -200,37 +219,10 @@ TEST(wallClearance, NearestWarpedFaceIsTheLeastOfTheFaces)
     const boundaryFaces faces(warped, 0);
     const wallClearance clearance(faces);
     const scalar searched = 4*std::sqrt(3.0)*clearance.voxelSize();
-    const faceList& all = faces.faces();
+    // Every other point within a tenth of the floor's mean plane, either
+    // side
     label withinRadius = 0;
-    std::uniform_real_distribution<scalar> v(0, 1);
-    for (label i = 0; i < 20000; ++i)
-    {
-        point p(fluidPoint(engine));
-        if (i % 2)
-        {
-            // Within a tenth of the floor's mean plane, either side
-            p.z() = 0.2*v(engine) - 0.1;
-        }
-        scalar least = GREAT;
-        for (const face& f : all)
-        {
-            least = min(least, f.nearestPoint(p, faces.points()).distance());
-        }
-        for (const scalar maxDistSqr : {GREAT, sqr(searched)})
-        {
-            const pointIndexHit nearest = faces.nearest(p, maxDistSqr);
-            ASSERT_EQ(nearest.hit(), sqr(least) < maxDistSqr)
-                << "at " << str(p);
-            if (!nearest.hit())
-            {
-                continue;
-            }
-            withinRadius += (maxDistSqr < GREAT);
-            const pointHit own =
-                all[nearest.index()].nearestPoint(p, faces.points());
-            ASSERT_EQ(own.distance(), least) << "at " << str(p);
-        }
-    }
+    expectNearestIsLeast(faces, searched, -0.1, 0.1, engine, withinRadius);
     EXPECT_GT(withinRadius, 10000);
 }
 
