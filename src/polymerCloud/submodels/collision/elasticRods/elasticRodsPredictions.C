@@ -398,8 +398,8 @@ bool Foam::polymer::collisionModels::elasticRods::growBox
     // A point of the rod's path strays from the path its box was formed
     // round by at most the rod's drift since then: within the box's gap
     // from that path, the box holds it (no sweep). Else swept: a box that
-    // holds the new path keeps the larger of the two slacks; one that
-    // does not grows round it, by the margin
+    // holds the new path (its gap from it not negative) keeps the larger
+    // of the two slacks; one that does not grows round it, by the margin
     const scalar drift = rodDrift(rod);
     if (drift + slackRoundOff_ < boxSlack_[rod])
     {
@@ -407,13 +407,13 @@ bool Foam::polymer::collisionModels::elasticRods::growBox
     }
     const boundBox box(sweep(rod, t, dt));
     const boundBox& held = grid_.boxes()[rod];
-    if (grid_.holds(rod, box))
+    const scalar gap = min
+    (
+        cmptMin(box.min() - held.min()),
+        cmptMin(held.max() - box.max())
+    );
+    if (gap >= 0)
     {
-        const scalar gap = min
-        (
-            cmptMin(box.min() - held.min()),
-            cmptMin(held.max() - box.max())
-        );
         boxSlack_[rod] = max(boxSlack_[rod], drift + gap);
         return false;
     }
