@@ -358,4 +358,65 @@ TEST(sweptBoxGrid, ListsThePairsInAnOrderTheCellsDoNotChange)
 }
 
 
+TEST(sweptBoxGrid, SweepsAndCellsListTheSamePairs)
+{
+    // 40 chains in a 4 a cube and 40 in a cube 6 a beyond it along x: the
+    // boxes spread along x, as a channel's wells spread them. Swept along
+    // x or held in cells, a grid must list the same pairs, in the same
+    // order, built and after growing boxes (through sorted boxes and
+    // through cells); and a sweep whose tests exceed a low limit (one a
+    // rod) gives up for the cells, with the same list
+    std::mt19937_64 gen(31);
+    const PtrList<chainType> types(fiveBeadType());
+    polymerChains chains(types);
+    appendRandomChains(chains, 40, gen);
+    polymerChains beyond(types);
+    appendRandomChains(beyond, 40, gen);
+    for (label chaini = 0; chaini < beyond.nChains(); ++chaini)
+    {
+        List<vector> x(SubList<vector>(beyond.positions(), 5, 5*chaini));
+        for (vector& xi : x)
+        {
+            xi.x() += 10;
+        }
+        chains.append(0, chains.nChains(), x, List<vector>(5, Zero));
+    }
+    chainRods rods;
+    rods.update(chains);
+    const List<boundBox> boxes(randomRodBoxes(chains, rods, gen));
+
+    sweptBoxGrid cells(0), swept(labelMax), crowded(1);
+    cells.build(rods, List<boundBox>(boxes), List<vector>());
+    swept.build(rods, List<boundBox>(boxes), List<vector>());
+    crowded.build(rods, List<boundBox>(boxes), List<vector>());
+    EXPECT_FALSE(cells.swept());
+    EXPECT_TRUE(swept.swept());
+    EXPECT_FALSE(crowded.swept());
+    EXPECT_GT(cells.pairs().size(), 200);
+
+    const auto expectSameLists =
+        [&](const sweptBoxGrid& a, const sweptBoxGrid& b)
+    {
+        ASSERT_EQ(a.pairs(), b.pairs());
+        for (label rod = 0; rod < rods.size(); ++rod)
+        {
+            EXPECT_EQ(a.rodPairs(rod), b.rodPairs(rod)) << "rod " << rod;
+        }
+    };
+    expectSameLists(cells, swept);
+    expectSameLists(cells, crowded);
+
+    std::uniform_int_distribution<label> pick(0, rods.size() - 1);
+    for (label growth = 0; growth < 30; ++growth)
+    {
+        const label rod = pick(gen);
+        boundBox grown(boxes[rod]);
+        grown.inflate(0.2 + 0.2*growth);
+        cells.grow(rod, grown, 0.05);
+        swept.grow(rod, grown, 0.05);
+    }
+    expectSameLists(cells, swept);
+}
+
+
 // ************************************************************************* //

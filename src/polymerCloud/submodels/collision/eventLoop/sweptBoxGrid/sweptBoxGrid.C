@@ -15,11 +15,66 @@ License
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
 {
+
+// Does box b (lower and negated upper bounds along two axes, four
+// values) meet a box whose (upper, negated lower) bounds are a? Both
+// lanes of both comparisons true; one SSE2 comparison for two lanes
+#ifdef __SSE2__
+struct acrossBounds
+{
+    __m128d first, second;
+
+    explicit acrossBounds(const double* b)
+    :
+        first(_mm_shuffle_pd(_mm_loadu_pd(b), _mm_loadu_pd(b), 1)),
+        second(_mm_shuffle_pd(_mm_loadu_pd(b + 2), _mm_loadu_pd(b + 2), 1))
+    {
+        const __m128d negative = _mm_set1_pd(-0.0);
+        first = _mm_xor_pd(first, negative);
+        second = _mm_xor_pd(second, negative);
+    }
+
+    bool met(const double* b) const
+    {
+        return _mm_movemask_pd
+        (
+            _mm_and_pd
+            (
+                _mm_cmple_pd(_mm_loadu_pd(b), first),
+                _mm_cmple_pd(_mm_loadu_pd(b + 2), second)
+            )
+        ) == 3;
+    }
+};
+#else
+struct acrossBounds
+{
+    double a[4];
+
+    explicit acrossBounds(const double* b)
+    :
+        a{-b[1], -b[0], -b[3], -b[2]}
+    {}
+
+    bool met(const double* b) const
+    {
+        return
+            (b[0] <= a[0]) & (b[1] <= a[1])
+          & (b[2] <= a[2]) & (b[3] <= a[3]);
+    }
+};
+#endif
 
 // The empty slot of the pairs' key table
 constexpr uint64_t noKey = ~uint64_t(0);
@@ -51,7 +106,7 @@ inline bool firstShared
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::polymer::sweptBoxGrid::sweptBoxGrid()
+Foam::polymer::sweptBoxGrid::sweptBoxGrid(const label maxSweepTestsPerRod)
 :
     rods_(nullptr),
     imageShift_(),
@@ -82,11 +137,30 @@ Foam::polymer::sweptBoxGrid::sweptBoxGrid()
     newPairs_(),
     newOrder_(),
     groupStart_(),
-    met_()
+    maxSweepTestsPerRod_(maxSweepTestsPerRod),
+    met_(),
+    nBuilds_(0),
+    swept_(false),
+    sweepAgainAt_(0),
+    sweepAxis_(-1),
+    sortedAt_(-1),
+    sweepOrder_(),
+    sweepMin_(),
+    sweepMax_(),
+    sweepAcross_(),
+    sweepSpan_(0)
 {}
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::polymer::sweptBoxGrid::roundOffMargin() const
+{
+    return
+        1e-9
+       *(cmptMax(cmptMag(bounds_.min())) + cmptMax(cmptMag(bounds_.max())));
+}
+
 
 void Foam::polymer::sweptBoxGrid::buildImages(const UList<vector>& lattice)
 {
@@ -468,6 +542,161 @@ void Foam::polymer::sweptBoxGrid::addCellPairs()
 }
 
 
+void Foam::polymer::sweptBoxGrid::sortAlong(const direction axis)
+{
+    const label nRods = box_.size();
+    const bool kept =
+        sortedAt_ == nBuilds_ - 1
+     && sweepAxis_ == label(axis)
+     && sweepOrder_.size() == nRods;
+    sweepAxis_ = axis;
+    sortedAt_ = nBuilds_;
+    sweepMin_.setSize(nRods);
+    if (!kept)
+    {
+        sweepOrder_.setSize(nRods);
+        forAll(sweepOrder_, p)
+        {
+            sweepOrder_[p] = p;
+        }
+        std::sort
+        (
+            sweepOrder_.begin(),
+            sweepOrder_.end(),
+            [this, axis](const label a, const label b)
+            {
+                return box_[a].min()[axis] < box_[b].min()[axis];
+            }
+        );
+    }
+    forAll(sweepOrder_, p)
+    {
+        sweepMin_[p] = box_[sweepOrder_[p]].min()[axis];
+    }
+    // Beyond the last, a lower bound no box ends after: the sweep's stop
+    sweepMin_.append(std::numeric_limits<scalar>::infinity());
+    if (kept)
+    {
+        // The boxes move little between builds: an insertion sort of the
+        // last order takes a pass and a few moves
+        for (label p = 1; p < nRods; ++p)
+        {
+            const scalar lower = sweepMin_[p];
+            const label rod = sweepOrder_[p];
+            label q = p;
+            for (; q > 0 && sweepMin_[q - 1] > lower; --q)
+            {
+                sweepMin_[q] = sweepMin_[q - 1];
+                sweepOrder_[q] = sweepOrder_[q - 1];
+            }
+            sweepMin_[q] = lower;
+            sweepOrder_[q] = rod;
+        }
+    }
+    // The upper bounds and the bounds across the axis in the order; the
+    // longest span with a margin over the round-off of a look-up's window
+    const direction across1 = (axis + 1) % 3, across2 = (axis + 2) % 3;
+    sweepMax_.setSize(nRods);
+    sweepAcross_.setSize(4*nRods);
+    sweepSpan_ = roundOffMargin();
+    scalar span = 0;
+    forAll(sweepOrder_, p)
+    {
+        const boundBox& box = box_[sweepOrder_[p]];
+        sweepMax_[p] = box.max()[axis];
+        span = max(span, sweepMax_[p] - sweepMin_[p]);
+        scalar* const across = &sweepAcross_[4*p];
+        across[0] = box.min()[across1];
+        across[1] = -box.max()[across1];
+        across[2] = box.min()[across2];
+        across[3] = -box.max()[across2];
+    }
+    sweepSpan_ += span;
+}
+
+
+bool Foam::polymer::sweptBoxGrid::sweep()
+{
+    // Not across a lattice (the images are looked up in the cells), and
+    // not again for a while after a sweep gave up: the rods crowd for
+    // many steps
+    if
+    (
+        imageShift_.size() > 1
+     || maxSweepTestsPerRod_ <= 0
+     || nBuilds_ < sweepAgainAt_
+    )
+    {
+        return false;
+    }
+    const vector span(bounds_.span());
+    sortAlong
+    (
+        span.x() >= max(span.y(), span.z()) ? 0 : span.y() >= span.z() ? 1 : 2
+    );
+    const label nRods = max(box_.size(), 1);
+    const label maxTests =
+        maxSweepTestsPerRod_ < labelMax/nRods
+      ? maxSweepTestsPerRod_*nRods
+      : labelMax;
+    if (addSweptPairs(maxTests))
+    {
+        return true;
+    }
+    sweepAgainAt_ = nBuilds_ + 16;
+    return false;
+}
+
+
+bool Foam::polymer::sweptBoxGrid::addSweptPairs(const label maxTests)
+{
+    // Each box against those after it in the order that start before it
+    // ends: every pair whose boxes meet, once. Along the axis such boxes
+    // meet (the later starts after the earlier starts and before it
+    // ends), so the test is across it alone, on the sorted copies: with
+    // the upper bounds negated, b's (lower, -upper) <= a's (upper, -lower)
+    // along each axis across (negation is exact: the outcomes of
+    // boxesMeet's comparisons). Kept by a count, as the cells' pairs are;
+    // the later rod of a pair is the one whose look-up found it, as the
+    // cells list them
+    const label nRods = sweepOrder_.size();
+    if (met_.size() < size_t(nRods))
+    {
+        met_.resize(2*nRods);
+    }
+    // Through the lists' data: a label stored may alias a list's size
+    const label* const order = sweepOrder_.cdata();
+    const scalar* const lower = sweepMin_.cdata();
+    const scalar* const upper = sweepMax_.cdata();
+    const scalar* const across = sweepAcross_.cdata();
+    label* const met = met_.data();
+    label nTests = 0;
+    for (label p = 0; p < nRods; ++p)
+    {
+        const scalar end = upper[p];
+        const acrossBounds a(across + 4*p);
+        label q = p + 1;
+        label nMet = 0;
+        for (; lower[q] <= end; ++q)
+        {
+            met[nMet] = order[q];
+            nMet += a.met(across + 4*q);
+        }
+        if (q - p - 1 > maxTests - nTests)
+        {
+            newPairs_.clear();
+            return false;
+        }
+        nTests += q - p - 1;
+        for (label m = 0; m < nMet; ++m)
+        {
+            addPair(max(order[p], met[m]), min(order[p], met[m]), 0, Zero);
+        }
+    }
+    return true;
+}
+
+
 void Foam::polymer::sweptBoxGrid::cellRange
 (
     const boundBox& box,
@@ -503,8 +732,7 @@ void Foam::polymer::sweptBoxGrid::reachingImages
     // over the round-off of query's own test, are passed over: most of
     // them on a dense periodic mesh, and the test in query is the one
     // that decides
-    const scalar margin =
-        1e-9*(cmptMax(cmptMag(bounds_.min())) + cmptMax(cmptMag(bounds_.max())));
+    const scalar margin = roundOffMargin();
     const vector reachMin(bounds_.min() - box.max() - vector::uniform(margin));
     const vector reachMax(bounds_.max() - box.min() + vector::uniform(margin));
     const auto reaches = [&](const vector& shift)
@@ -577,34 +805,19 @@ void Foam::polymer::sweptBoxGrid::reachingImages
 }
 
 
-void Foam::polymer::sweptBoxGrid::query
+inline Foam::label Foam::polymer::sweptBoxGrid::cellLookUp
 (
-    const label rod,
-    const label image,
+    const boundBox& box,
     const label limit
 )
 {
-    const vector& shift = imageShift_[image];
-    const boundBox box(box_[rod].min() + shift, box_[rod].max() + shift);
-    if (!box.overlaps(bounds_))
-    {
-        // No rod's box out there
-        return;
-    }
-
     // A pair is tested in the first cell both boxes span, the first of
     // them the scan meets, and passed over in the others. Every test is
     // evaluated and combined without branches (boxesMeet), and each rod
     // met is kept by a count rather than a branch: a crowd's outcomes,
-    // one in five met, would mispredict. The grown boxes, beyond the
-    // cells of the build, are tested whole
+    // one in five met, would mispredict
     Vector<label> lower, upper;
     cellRange(box, lower, upper);
-    const size_t most = cellRods_.size() + grownRods_.size();
-    if (met_.size() < most)
-    {
-        met_.resize(2*most);
-    }
     label nMet = 0;
     for (label i = lower.x(); i <= upper.x(); ++i)
     {
@@ -630,6 +843,65 @@ void Foam::polymer::sweptBoxGrid::query
             }
         }
     }
+    return nMet;
+}
+
+
+Foam::label Foam::polymer::sweptBoxGrid::sweepLookUp
+(
+    const boundBox& box,
+    const label limit
+)
+{
+    // The boxes that may meet box start at most the longest box's span
+    // before it and no later than its end
+    const direction axis = sweepAxis_;
+    const auto sorted = sweepMin_.cbegin();
+    const auto sortedEnd = sorted + sweepOrder_.size();
+    const label first = std::lower_bound
+    (
+        sorted, sortedEnd, box.min()[axis] - sweepSpan_
+    ) - sorted;
+    const label last = std::upper_bound
+    (
+        sorted, sortedEnd, box.max()[axis]
+    ) - sorted;
+    label nMet = 0;
+    for (label p = first; p < last; ++p)
+    {
+        const label other = sweepOrder_[p];
+        met_[nMet] = other;
+        nMet += (other < limit) & boxesMeet(box_[other], box);
+    }
+    return nMet;
+}
+
+
+void Foam::polymer::sweptBoxGrid::query
+(
+    const label rod,
+    const label image,
+    const label limit
+)
+{
+    const vector& shift = imageShift_[image];
+    const boundBox box(box_[rod].min() + shift, box_[rod].max() + shift);
+    if (!box.overlaps(bounds_))
+    {
+        // No rod's box out there
+        return;
+    }
+
+    // The build's boxes, then the grown boxes, which may reach beyond
+    // the cells or the sorted bounds of the build: tested whole. A slot
+    // is written before its rod is counted: one more than may be met
+    const size_t most = box_.size() + grownRods_.size() + 1;
+    if (met_.size() < most)
+    {
+        met_.resize(2*most);
+    }
+    label nMet =
+        swept_ ? sweepLookUp(box, limit) : cellLookUp(box, limit);
     for (const label other : grownRods_)
     {
         met_[nMet] = other;
@@ -675,8 +947,6 @@ void Foam::polymer::sweptBoxGrid::build
         buildImages(lattice);
     }
 
-    layCells(box_.size());
-    fillCells();
     pairs_.clear();
     pairShift_.clear();
     pairKey_.clear();
@@ -691,7 +961,14 @@ void Foam::polymer::sweptBoxGrid::build
         pairsOfRod.clear();
     }
 
-    addCellPairs();
+    ++nBuilds_;
+    swept_ = sweep();
+    if (!swept_)
+    {
+        layCells(box_.size());
+        fillCells();
+        addCellPairs();
+    }
     if (imageShift_.size() > 1)
     {
         // A rod meets the rods before it: the bounds of those pass over
