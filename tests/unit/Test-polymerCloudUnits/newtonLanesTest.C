@@ -8,7 +8,8 @@ Description
     path: steps of 0.02 a (lanes to convergence), 0.3 a with 50 iterations
     (halved steps and the retry along x*: the scalar path from the start),
     one iteration (given up at the cap), two chain types interleaved
-    (groups of 1 to 4 chains, a short group repeating its last chain; the
+    (the lanes gather a type's chains across the other's, the last group
+    of a type 1 to 4 chains, a short group repeating its last chain; the
     second type of 7, 3 or 2 beads, the shortest systems of one or two
     rows), a ring type among open chains, and a NaN in one chain.
 \*---------------------------------------------------------------------------*/

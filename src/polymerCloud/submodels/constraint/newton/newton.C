@@ -15,6 +15,8 @@ License
 #include "checkedInput.H"
 #include "makePolymerModel.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 makePolymerModel(constraintModel, constraintModels, newton)
@@ -240,36 +242,20 @@ Foam::label Foam::polymer::constraintModels::newton::iterate
 }
 
 
-Foam::label Foam::polymer::constraintModels::newton::laneGroup
+bool Foam::polymer::constraintModels::newton::inLanes
 (
     const polymerChains& chains,
     const label chaini
-) const
+)
 {
-    const label typei = chains.typeIndex(chaini);
-    if (chains.type(chaini).ring() || chains.type(chaini).nRods() < 1)
-    {
-        return 0;
-    }
-
-    label nGroup = 1;
-    while
-    (
-        nGroup < newtonLanes::nLanes
-     && chaini + nGroup < chains.nChains()
-     && chains.typeIndex(chaini + nGroup) == typei
-    )
-    {
-        ++nGroup;
-    }
-    return nGroup;
+    return !chains.type(chaini).ring() && chains.type(chaini).nRods() >= 1;
 }
 
 
 void Foam::polymer::constraintModels::newton::correctInLanes
 (
     polymerChains& chains,
-    const label chaini,
+    const laneGroup& group,
     const label nGroup,
     const UList<vector>& positionsOld,
     const scalar deltaT,
@@ -277,7 +263,7 @@ void Foam::polymer::constraintModels::newton::correctInLanes
     DynamicList<label>& failedChains
 ) const
 {
-    const chainType& type = chains.type(chaini);
+    const chainType& type = chains.type(group[0]);
     const label n = type.nBeads();
     const bool alongStart = (directions_ == SHAKE::directionType::start);
 
@@ -288,7 +274,7 @@ void Foam::polymer::constraintModels::newton::correctInLanes
     vector* v[newtonLanes::nLanes];
     for (label lanei = 0; lanei < newtonLanes::nLanes; ++lanei)
     {
-        const label first = chains.start(chaini + min(lanei, nGroup - 1));
+        const label first = chains.start(group[min(lanei, nGroup - 1)]);
         x[lanei] = chains.positions().cdata() + first;
         rodStart[lanei] =
             (alongStart ? positionsOld.cdata() : chains.positions().cdata())
@@ -310,7 +296,7 @@ void Foam::polymer::constraintModels::newton::correctInLanes
             lanes_.store
             (
                 lanei,
-                chains.positions().data() + chains.start(chaini + lanei),
+                chains.positions().data() + chains.start(group[lanei]),
                 v[lanei],
                 oneByDeltaT
             );
@@ -322,10 +308,10 @@ void Foam::polymer::constraintModels::newton::correctInLanes
     scalar largestVelocity[newtonLanes::nLanes];
     lanes_.projectVelocities(velocitiesSolved, largestVelocity);
 
-    // In chain order, as one at a time: counts, reports and failures alike
+    // In the group's order, as one at a time: counts, reports and failures
     for (label lanei = 0; lanei < nGroup; ++lanei)
     {
-        const label c = chaini + lanei;
+        const label c = group[lanei];
         if (!iterations[lanei])
         {
             if (!correctChain(chains, c, positionsOld, deltaT, time))
@@ -368,27 +354,59 @@ void Foam::polymer::constraintModels::newton::correct
     DynamicList<label>& failedChains
 ) const
 {
-    label c = 0;
-    while (c < chains.nChains())
+    // The open chains of each type gathered into lanes in the chains'
+    // order, a group solved when full and the rest at the end: the chains
+    // are kept in the order of their cells, which interleaves the types
+    // of a mixed scene. A chain comes out of a lane with the bits of one
+    // at a time, so the grouping changes no result; the failures are
+    // listed in the chains' order, as one at a time
+    const label nFailedBefore = failedChains.size();
+    const label nTypes = chains.types().size();
+    List<laneGroup> groups(nTypes);
+    labelList nGrouped(nTypes, 0);
+    const auto solve = [&](const label typei)
     {
-        const label nGroup = laneGroup(chains, c);
-        if (nGroup >= 2)
+        if (nGrouped[typei] >= 2)
         {
             correctInLanes
             (
-                chains, c, nGroup, positionsOld, deltaT, time, failedChains
+                chains, groups[typei], nGrouped[typei],
+                positionsOld, deltaT, time, failedChains
             );
-            c += nGroup;
         }
-        else
+        else if
+        (
+            nGrouped[typei] == 1
+         && !correctChain(chains, groups[typei][0], positionsOld, deltaT, time)
+        )
+        {
+            failedChains.append(groups[typei][0]);
+        }
+        nGrouped[typei] = 0;
+    };
+
+    for (label c = 0; c < chains.nChains(); ++c)
+    {
+        if (!inLanes(chains, c))
         {
             if (!correctChain(chains, c, positionsOld, deltaT, time))
             {
                 failedChains.append(c);
             }
-            ++c;
+            continue;
+        }
+        const label typei = chains.typeIndex(c);
+        groups[typei][nGrouped[typei]++] = c;
+        if (nGrouped[typei] == newtonLanes::nLanes)
+        {
+            solve(typei);
         }
     }
+    for (label typei = 0; typei < nTypes; ++typei)
+    {
+        solve(typei);
+    }
+    std::sort(failedChains.begin() + nFailedBefore, failedChains.end());
 }
 
 
