@@ -30,6 +30,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "polymerCloud.H"
+#include "asciiBlockWriter.H"
 #include "checkedInput.H"
 #include "writeStatus.H"
 #include "runTotals.H"
@@ -399,9 +400,10 @@ void Foam::polymer::polymerCloud::writePositions
     os  << x.size() << nl << token::BEGIN_LIST << nl;
     if (os.format() == IOstream::ASCII)
     {
+        asciiBlockWriter out(os);
         for (const point& p : x)
         {
-            os  << p << token::SPACE << label(-1) << nl;
+            out << p << char(token::SPACE) << label(-1) << char(token::NL);
         }
     }
     else
@@ -438,6 +440,54 @@ void Foam::polymer::polymerCloud::writePositions
 }
 
 
+bool Foam::polymer::polymerCloud::writeVectorField
+(
+    const word& name,
+    const UList<vector>& values,
+    IOstream::streamFormat fmt,
+    IOstream::versionNumber ver,
+    IOstream::compressionType cmp
+) const
+{
+    const IOobject io(fieldIOobject(name, IOobject::NO_READ));
+    if
+    (
+        fmt != IOstream::ASCII
+     || values.size() <= Detail::ListPolicy::short_length<vector>::value
+     || values.uniform()
+    )
+    {
+        return IOField<vector>(io, values).writeObject(fmt, ver, cmp, true);
+    }
+
+    // The file IOField::writeObject writes (through the file handler, its
+    // header, UList::writeList's layout of a long list that is not
+    // uniform, the end divider), its numbers formatted in blocks
+    mkDir(io.path());
+    autoPtr<Ostream> osPtr
+    (
+        fileHandler().NewOFstream(io.objectPath(), fmt, ver, cmp)
+    );
+    Ostream& os = osPtr();
+    if (!os.good())
+    {
+        return false;
+    }
+    io.writeHeader(os, IOField<vector>::typeName);
+    os  << nl << values.size() << nl << token::BEGIN_LIST << nl;
+    {
+        asciiBlockWriter out(os);
+        for (const vector& v : values)
+        {
+            out << v << char(token::NL);
+        }
+    }
+    os  << token::END_LIST << nl;
+    IOobject::writeEndDivider(os);
+    return os.good();
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 bool Foam::polymer::polymerCloud::writeObject
@@ -456,16 +506,6 @@ bool Foam::polymer::polymerCloud::writeObject
     writePositions(fmt, ver, cmp);
 
     const label n = chains_.nBeads();
-    IOField<point> position
-    (
-        fieldIOobject("position", IOobject::NO_READ),
-        chains_.positions()
-    );
-    IOField<vector> U
-    (
-        fieldIOobject("U", IOobject::NO_READ),
-        chains_.velocities()
-    );
     IOField<label> chainId(fieldIOobject("chainId", IOobject::NO_READ), n);
     IOField<label> bead(fieldIOobject("bead", IOobject::NO_READ), n);
     IOField<label> typeIndex
@@ -485,8 +525,8 @@ bool Foam::polymer::polymerCloud::writeObject
     }
 
     const bool ok =
-        position.writeObject(fmt, ver, cmp, true)
-     && U.writeObject(fmt, ver, cmp, true)
+        writeVectorField("position", chains_.positions(), fmt, ver, cmp)
+     && writeVectorField("U", chains_.velocities(), fmt, ver, cmp)
      && chainId.writeObject(fmt, ver, cmp, true)
      && bead.writeObject(fmt, ver, cmp, true)
      && typeIndex.writeObject(fmt, ver, cmp, true);
