@@ -442,14 +442,14 @@ void Foam::polymer::polymerCloud::writePositions
 
 bool Foam::polymer::polymerCloud::writeVectorField
 (
-    const word& name,
-    const UList<vector>& values,
+    const IOField<vector>& field,
     IOstream::streamFormat fmt,
     IOstream::versionNumber ver,
     IOstream::compressionType cmp
 ) const
 {
-    const IOobject io(fieldIOobject(name, IOobject::NO_READ));
+    const IOobject& io = field;
+    const UList<vector>& values = field;
     if
     (
         fmt != IOstream::ASCII
@@ -457,7 +457,7 @@ bool Foam::polymer::polymerCloud::writeVectorField
      || values.uniform()
     )
     {
-        return IOField<vector>(io, values).writeObject(fmt, ver, cmp, true);
+        return field.writeObject(fmt, ver, cmp, true);
     }
 
     // The file IOField::writeObject writes (through the file handler, its
@@ -506,6 +506,16 @@ bool Foam::polymer::polymerCloud::writeObject
     writePositions(fmt, ver, cmp);
 
     const label n = chains_.nBeads();
+    IOField<point> position
+    (
+        fieldIOobject("position", IOobject::NO_READ),
+        chains_.positions()
+    );
+    IOField<vector> U
+    (
+        fieldIOobject("U", IOobject::NO_READ),
+        chains_.velocities()
+    );
     IOField<label> chainId(fieldIOobject("chainId", IOobject::NO_READ), n);
     IOField<label> bead(fieldIOobject("bead", IOobject::NO_READ), n);
     IOField<label> typeIndex
@@ -525,8 +535,8 @@ bool Foam::polymer::polymerCloud::writeObject
     }
 
     const bool ok =
-        writeVectorField("position", chains_.positions(), fmt, ver, cmp)
-     && writeVectorField("U", chains_.velocities(), fmt, ver, cmp)
+        writeVectorField(position, fmt, ver, cmp)
+     && writeVectorField(U, fmt, ver, cmp)
      && chainId.writeObject(fmt, ver, cmp, true)
      && bead.writeObject(fmt, ver, cmp, true)
      && typeIndex.writeObject(fmt, ver, cmp, true);
