@@ -17,11 +17,16 @@ License
 
 // * * * * * * * * * * * * * * * * Dispatch  * * * * * * * * * * * * * * * //
 
-// As boxMuller: each kernel compiled for AVX2 and for the x86-64 baseline,
-// without fused multiply-adds, so both give the scalar path's bits
+// As boxMuller: each kernel compiled for AVX-512, AVX2 and the x86-64
+// baseline, without fused multiply-adds, so all give the scalar path's
+// bits. The AVX-512 version (four lanes still, in EVEX instructions) is
+// for the processors boxMuller's AVX-512 transform runs on: there the
+// integration around the lanes ran faster with it than with the lanes
+// in AVX2 (the chainThroughput README, 2026-12-05)
 #if defined(__x86_64__) && defined(__has_attribute)
     #if __has_attribute(target_clones)
-        #define LANE_TARGETS __attribute__((target_clones("avx2", "default")))
+        #define LANE_TARGETS \
+            __attribute__((target_clones("avx512f", "avx2", "default")))
     #endif
 #endif
 
