@@ -106,6 +106,28 @@ List<boundBox> randomRodBoxes
     return boxes;
 }
 
+
+// Two grids list the same pairs with the same translations, in the same
+// order, and the first nRods rods the same pairs in the same order
+void expectSameLists
+(
+    const sweptBoxGrid& a,
+    const sweptBoxGrid& b,
+    const label nRods
+)
+{
+    ASSERT_EQ(a.pairs().size(), b.pairs().size());
+    forAll(a.pairs(), pairi)
+    {
+        EXPECT_EQ(a.pairs()[pairi], b.pairs()[pairi]) << "pair " << pairi;
+        EXPECT_EQ(a.pairShift(pairi), b.pairShift(pairi));
+    }
+    for (label rod = 0; rod < nRods; ++rod)
+    {
+        EXPECT_EQ(a.rodPairs(rod), b.rodPairs(rod)) << "rod " << rod;
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -318,21 +340,6 @@ TEST(sweptBoxGrid, ListsThePairsInAnOrderTheCellsDoNotChange)
         allBoxes[rod] = nearBoxes[rod];
     }
 
-    const auto expectSameLists =
-        [&](const sweptBoxGrid& a, const sweptBoxGrid& b)
-    {
-        ASSERT_EQ(a.pairs().size(), b.pairs().size());
-        forAll(a.pairs(), pairi)
-        {
-            EXPECT_EQ(a.pairs()[pairi], b.pairs()[pairi]) << "pair " << pairi;
-            EXPECT_EQ(a.pairShift(pairi), b.pairShift(pairi));
-        }
-        for (label rod = 0; rod < nearRods.size(); ++rod)
-        {
-            EXPECT_EQ(a.rodPairs(rod), b.rodPairs(rod)) << "rod " << rod;
-        }
-    };
-
     for (const List<vector>& lattice :
         {List<vector>(), List<vector>({vector(4, 0, 0), vector(0, 4, 0)})})
     {
@@ -340,7 +347,7 @@ TEST(sweptBoxGrid, ListsThePairsInAnOrderTheCellsDoNotChange)
         nearGrid.build(nearRods, List<boundBox>(nearBoxes), lattice);
         allGrid.build(allRods, List<boundBox>(allBoxes), lattice);
         EXPECT_GT(nearGrid.pairs().size(), 200);
-        expectSameLists(nearGrid, allGrid);
+        expectSameLists(nearGrid, allGrid, nearRods.size());
 
         // Boxes grown as events change paths: each grid lists the new
         // pairs of a grown box in the same order
@@ -353,7 +360,7 @@ TEST(sweptBoxGrid, ListsThePairsInAnOrderTheCellsDoNotChange)
             nearGrid.grow(rod, grown, 0.05);
             allGrid.grow(rod, grown, 0.05);
         }
-        expectSameLists(nearGrid, allGrid);
+        expectSameLists(nearGrid, allGrid, nearRods.size());
     }
 }
 
@@ -394,17 +401,8 @@ TEST(sweptBoxGrid, SweepsAndCellsListTheSamePairs)
     EXPECT_FALSE(crowded.swept());
     EXPECT_GT(cells.pairs().size(), 200);
 
-    const auto expectSameLists =
-        [&](const sweptBoxGrid& a, const sweptBoxGrid& b)
-    {
-        ASSERT_EQ(a.pairs(), b.pairs());
-        for (label rod = 0; rod < rods.size(); ++rod)
-        {
-            EXPECT_EQ(a.rodPairs(rod), b.rodPairs(rod)) << "rod " << rod;
-        }
-    };
-    expectSameLists(cells, swept);
-    expectSameLists(cells, crowded);
+    expectSameLists(cells, swept, rods.size());
+    expectSameLists(cells, crowded, rods.size());
 
     std::uniform_int_distribution<label> pick(0, rods.size() - 1);
     for (label growth = 0; growth < 30; ++growth)
@@ -415,7 +413,7 @@ TEST(sweptBoxGrid, SweepsAndCellsListTheSamePairs)
         cells.grow(rod, grown, 0.05);
         swept.grow(rod, grown, 0.05);
     }
-    expectSameLists(cells, swept);
+    expectSameLists(cells, swept, rods.size());
 }
 
 

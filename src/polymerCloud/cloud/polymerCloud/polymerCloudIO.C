@@ -473,7 +473,7 @@ bool Foam::polymer::polymerCloud::writeVectorField
     {
         return false;
     }
-    io.writeHeader(os, IOField<vector>::typeName);
+    field.writeHeader(os);
     os  << nl << values.size() << nl << token::BEGIN_LIST << nl;
     {
         asciiBlockWriter out(os);
