@@ -6,6 +6,7 @@ Description
     0 and 2^32 - 1, and those at the quadrant boundaries of the angle):
     error at most 1e-15 of the radius sqrt(-2 ln u1) (about 4 units in the
     last place; fdlibm's kernels and the exact reduction give about 1.5).
+    transformWords: the same bits as transform of the words' uniforms.
 
     chainNoise::sixNormals: a bead's deviates depend on its counter only,
     not on the chain's length, bit for bit; over 1.2 10^6 deviates mean 0,
@@ -18,6 +19,7 @@ Description
 #include "chainNoise.H"
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -88,6 +90,38 @@ TEST(boxMuller, MatchesExactTransform)
         );
     }
     EXPECT_LE(largest, 1e-15);
+}
+
+
+// transformWords from words in u's second half: the bits transform gives
+// for the words' uniforms, for whole blocks and the pairs after them.
+TEST(boxMuller, WordsGiveTheUniformsDeviates)
+{
+    std::mt19937_64 gen(11);
+    for (const label nPairs : {1, 15, 16, 51, 1200})
+    {
+        std::vector<uint64_t> words(nPairs);
+        words[0] = 0xffffffff00000000ULL;   // the extreme uniforms
+        for (label p = 1; p < nPairs; ++p)
+        {
+            words[p] = gen();
+        }
+
+        std::vector<double> expected(2*nPairs), xi(2*nPairs);
+        for (label p = 0; p < nPairs; ++p)
+        {
+            expected[2*p] = uniformOf(uint32_t(words[p]));
+            expected[2*p + 1] = uniformOf(uint32_t(words[p] >> 32));
+        }
+        boxMuller::transform(nPairs, expected.data());
+
+        std::memcpy(xi.data() + nPairs, words.data(), nPairs*sizeof(uint64_t));
+        boxMuller::transformWords(nPairs, xi.data());
+        for (label k = 0; k < 2*nPairs; ++k)
+        {
+            ASSERT_EQ(xi[k], expected[k]) << "pairs " << nPairs << ", " << k;
+        }
+    }
 }
 
 

@@ -228,8 +228,44 @@ static inline void sinCosTurn(const Real& u, Real& s, Real& c)
     c = fromBits((cosBits ^ swap) ^ (((qBits + 1) & 2) << 62));
 }
 
-// The transform of the pairs p = first, ..., first + n - 1 of u, with
-// Real a double (n = 1) or a block (n = blockSize)
+// The transform of one pair of uniforms (or of a block of pairs)
+template<class Real>
+__attribute__((always_inline))
+static inline void normalPair
+(
+    const Real& u1,
+    const Real& u2,
+    Real& x,
+    Real& y
+)
+{
+    const Real radius = squareRoot(-2*logPositive(u1));
+    Real s, c;
+    sinCosTurn(u2, s, c);
+    x = radius*c;
+    y = radius*s;
+}
+
+
+// The uniform (w + 1/2) 2^-32 in (0, 1) of each 32-bit word w (held in a
+// 64-bit integer): 2^52 + w is a double's bits, and subtracting 2^52 - 1/2
+// leaves w + 1/2; every operation is exact, so these are the bits of
+// (double(w) + 0.5)*2^-32, in integer and vector arithmetic throughout
+// (a 32-bit integer's conversion to double does not vectorise without
+// AVX-512)
+template<class Bits>
+__attribute__((always_inline))
+static inline auto uniformOfWord(const Bits& word)
+{
+    const uint64_t twoPower52Bits = 0x4330000000000000ULL;
+    const double twoPower52LessHalf = 4503599627370495.5;
+    const double toUnit = 1.0/4294967296.0;
+    return (fromBits(word | twoPower52Bits) - twoPower52LessHalf)*toUnit;
+}
+
+
+// The pairs p = first, ..., first + n - 1 of u, with Real a double
+// (n = 1) or a block (n = blockSize)
 template<class Real>
 __attribute__((always_inline))
 static inline void transformPairs(const label first, scalar* u)
@@ -242,11 +278,47 @@ static inline void transformPairs(const label first, scalar* u)
         reinterpret_cast<double*>(&u2)[j] = u[2*(first + j) + 1];
     }
 
-    const Real radius = squareRoot(-2*logPositive(u1));
-    Real s, c;
-    sinCosTurn(u2, s, c);
-    const Real x = radius*c;
-    const Real y = radius*s;
+    Real x, y;
+    normalPair(u1, u2, x, y);
+
+    for (int j = 0; j < n; ++j)
+    {
+        u[2*(first + j)] = reinterpret_cast<const double*>(&x)[j];
+        u[2*(first + j) + 1] = reinterpret_cast<const double*>(&y)[j];
+    }
+}
+
+
+// The pairs p = first, ..., first + n - 1 of words in u's second half:
+// pair p's uniforms are those of the low and the high 32 bits of the word
+// in u[nPairs + p], its deviates go to u[2 p] and u[2 p + 1]. With Bits a
+// 64-bit integer (n = 1) or a block of them (n = blockSize), Real the
+// matching double or block. The words are copied out (memcpy: their
+// storage is doubles') before any deviate is written, and the deviates
+// stop short of the words of the pairs after these (2 (first + n) <=
+// nPairs + first + n while first + n <= nPairs).
+template<class Real, class Bits>
+__attribute__((always_inline))
+static inline void transformWordPairs
+(
+    const label nPairs,
+    const label first,
+    scalar* u
+)
+{
+    constexpr int n = sizeof(Bits)/sizeof(uint64_t);
+    Bits word;
+    std::memcpy(&word, u + nPairs + first, sizeof(word));
+
+    const uint64_t low32 = 0xffffffffULL;
+    Real x, y;
+    normalPair
+    (
+        Real(uniformOfWord(word & low32)),
+        Real(uniformOfWord(word >> 32)),
+        x,
+        y
+    );
 
     for (int j = 0; j < n; ++j)
     {
@@ -274,6 +346,21 @@ void Foam::polymer::boxMuller::transform(const label nPairs, scalar* u)
     for (; p < nPairs; ++p)
     {
         transformPairs<double>(p, u);
+    }
+}
+
+
+BOX_MULLER_TARGETS
+void Foam::polymer::boxMuller::transformWords(const label nPairs, scalar* u)
+{
+    label p = 0;
+    for (; p + blockSize <= nPairs; p += blockSize)
+    {
+        transformWordPairs<block, blockBits>(nPairs, p, u);
+    }
+    for (; p < nPairs; ++p)
+    {
+        transformWordPairs<double, uint64_t>(nPairs, p, u);
     }
 }
 
