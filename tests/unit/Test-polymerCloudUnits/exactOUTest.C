@@ -2,7 +2,8 @@
 Description
     exactOU: one step from fixed x0, v0 in a fluid velocity u, over 10^5
     independent beads, against the exact Ornstein-Uhlenbeck moments; and
-    positionVarianceFactor(h) against independent evaluations.
+    positionVarianceFactor(h) against independent evaluations. No drift
+    (a solvent at rest) and a drift of zeros: the same bits.
 
     Tolerances are 5 standard errors of each estimator for n samples:
         mean:       SE = sigma/sqrt(n)
@@ -156,3 +157,53 @@ TEST(exactOU, CoefficientsReproduceCovariance)
 }
 
 // ************************************************************************* //
+
+
+// A solvent at rest given as no drift (an empty list, u not read) and as
+// a drift of zeros: the same bits, for exactOU and eulerMaruyama.
+TEST(exactOU, NoDriftIsZeroDrift)
+{
+    for (const word integration : {"exactOU", "eulerMaruyama"})
+    {
+        PtrList<chainType> types(oneType(37, 1, m, zeta, kT));
+        polymerChains atRest(types), zeroDrift(types);
+        List<vector> xs(37), vs(37);
+        forAll(xs, i)
+        {
+            xs[i] = x0 + vector(i, 0.5*i, -0.25*i);
+            vs[i] = v0 - vector(0.01*i, 0, 0.02*i);
+        }
+        for (label c = 0; c < 3; ++c)
+        {
+            atRest.append(0, c, xs, vs);
+            zeroDrift.append(0, c, xs, vs);
+        }
+
+        dictionary d;
+        d.add("integration", integration);
+        autoPtr<integrationModel> model(integrationModel::New(d));
+        const scalar dt = 0.01;
+        for (label step = 1; step <= 3; ++step)
+        {
+            model->integrate(atRest, List<vector>(), dt, step, 11);
+            model->integrate
+            (
+                zeroDrift, List<vector>(zeroDrift.nBeads(), Zero), dt,
+                step, 11
+            );
+        }
+        for (label i = 0; i < atRest.nBeads(); ++i)
+        {
+            for (direction k = 0; k < 3; ++k)
+            {
+                ASSERT_EQ(atRest.positions()[i][k], zeroDrift.positions()[i][k])
+                    << integration << " bead " << i;
+                ASSERT_EQ
+                (
+                    atRest.velocities()[i][k], zeroDrift.velocities()[i][k]
+                ) << integration << " bead " << i;
+            }
+        }
+        EXPECT_NE(atRest.positions()[0], xs[0]);
+    }
+}

@@ -52,7 +52,7 @@ void Foam::polymer::integrationModels::eulerMaruyama::integrateChain
 
     vector* x = chains.positions().data();
     vector* v = chains.velocities().data();
-    const vector* u = driftVelocity.cdata();
+    const vector* u = driftVelocity.empty() ? nullptr : driftVelocity.cdata();
 
     for (label i = first; i < chains.end(chaini); ++i)
     {
@@ -63,7 +63,8 @@ void Foam::polymer::integrationModels::eulerMaruyama::integrateChain
         );
 
         x[i] += v[i]*deltaT;
-        v[i] += -gammaDt*(v[i] - u[i]) + sigma*vector(a[0], a[1], a[2]);
+        const vector relative = u ? v[i] - u[i] : v[i];
+        v[i] += -gammaDt*relative + sigma*vector(a[0], a[1], a[2]);
     }
 }
 

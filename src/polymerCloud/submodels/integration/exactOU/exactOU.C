@@ -82,6 +82,45 @@ Foam::polymer::integrationModels::exactOU::coefficients::exact
 }
 
 
+template<bool drifting>
+inline void Foam::polymer::integrationModels::exactOU::advance
+(
+    const coefficients& k,
+    const scalar deltaT,
+    const label n,
+    const scalar* xi,
+    const vector* u,
+    vector* x,
+    vector* v
+)
+{
+    // Without drift u = 0 drops out: the same sums in the same order less
+    // their zero terms, the same bits
+    for (label i = 0; i < n; ++i)
+    {
+        const vector xi1(xi[6*i], xi[6*i + 1], xi[6*i + 2]);
+        const vector xi2(xi[6*i + 3], xi[6*i + 4], xi[6*i + 5]);
+
+        vector relative = v[i];
+        if (drifting)
+        {
+            relative -= u[i];
+        }
+
+        vector move = k.positionDecay*relative;
+        vector velocity = k.velocityDecay*relative;
+        if (drifting)
+        {
+            move = u[i]*deltaT + move;
+            velocity = u[i] + velocity;
+        }
+
+        x[i] += move + k.positionFromXi1*xi1 + k.positionFromXi2*xi2;
+        v[i] = velocity + k.velocitySigma*xi1;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::polymer::integrationModels::exactOU::exactOU(const dictionary& dict)
@@ -131,21 +170,16 @@ void Foam::polymer::integrationModels::exactOU::integrateChain
 
     vector* x = chains.positions().data() + first;
     vector* v = chains.velocities().data() + first;
-    const vector* u = driftVelocity.cdata() + first;
-    const scalar* xi = xi_.cdata();
-
-    for (label i = 0; i < n; ++i)
+    if (driftVelocity.empty())
     {
-        const vector xi1(xi[6*i], xi[6*i + 1], xi[6*i + 2]);
-        const vector xi2(xi[6*i + 3], xi[6*i + 4], xi[6*i + 5]);
-
-        const vector relative = v[i] - u[i];
-
-        x[i] +=
-            u[i]*deltaT + k.positionDecay*relative
-          + k.positionFromXi1*xi1 + k.positionFromXi2*xi2;
-
-        v[i] = u[i] + k.velocityDecay*relative + k.velocitySigma*xi1;
+        advance<false>(k, deltaT, n, xi_.cdata(), nullptr, x, v);
+    }
+    else
+    {
+        advance<true>
+        (
+            k, deltaT, n, xi_.cdata(), driftVelocity.cdata() + first, x, v
+        );
     }
 }
 
