@@ -1,17 +1,19 @@
 /*---------------------------------------------------------------------------*\
 Description
-    newton and exactRods solve open chains of one type four at a time, in
-    the lanes of the vector registers (newtonLanes). Their correct()
-    must give every chain the bits that correctChain, one chain at a time,
-    gives it: the same positions and velocities (memcmp), the same failed
-    chains in the same order and the same counts. The scenes take each
-    path: steps of 0.02 a (lanes to convergence), 0.3 a with 50 iterations
-    (halved steps and the retry along x*: the scalar path from the start),
-    one iteration (given up at the cap), two chain types interleaved
-    (the lanes gather a type's chains across the other's, the last group
-    of a type 1 to 4 chains, a short group repeating its last chain; the
-    second type of 7, 3 or 2 beads, the shortest systems of one or two
-    rows), a ring type among open chains, and a NaN in one chain.
+    newton and exactRods solve open chains of one type several at a time
+    (eight with AVX-512, four otherwise), in the lanes of the vector
+    registers (newtonLanes). Their correct() must give every chain the
+    bits that correctChain, one chain at a time, gives it: the same
+    positions and velocities (memcmp), the same failed chains in the same
+    order and the same counts. The scenes take each path: steps of 0.02 a
+    (lanes to convergence), 0.3 a with 50 iterations (halved steps and the
+    retry along x*: the scalar path from the start), one iteration (given
+    up at the cap), two chain types interleaved (the lanes gather a type's
+    chains across the other's, the last group of a type short of the lanes,
+    repeating its last chain; the second type of 7, 3 or 2 beads, the
+    shortest systems of one or two rows), a ring type among open chains,
+    and a NaN in one chain. Eight lanes and two groups of four give the
+    same bits (on processors with AVX-512; skipped elsewhere).
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
@@ -193,9 +195,18 @@ INSTANTIATE_TEST_SUITE_P
 );
 
 
+//- The lane counts this processor runs: 4, and 8 with AVX-512
+labelList laneCounts()
+{
+    return
+        newtonLanes::registerLanes() == 8 ? labelList({4, 8}) : labelList({4});
+}
+
+
 // A lane whose system has a zero pivot is given up, without a division by
 // zero, and the other lanes converge as they would alone: a chain whose
-// x* rods are perpendicular to its x^n rods (every diagonal entry zero)
+// x* rods are perpendicular to its x^n rods (every diagonal entry zero),
+// in lane 2 of four and of eight
 TEST(newtonLanes, GivesUpALaneWithAZeroPivot)
 {
     const label n = 5;
@@ -206,33 +217,124 @@ TEST(newtonLanes, GivesUpALaneWithAZeroPivot)
         rodsAcross[i] = vector(0, i*a, 0);
     }
 
-    newtonLanes lanes;
-    lanes.resize(n);
-    const vector* x[newtonLanes::nLanes];
-    const vector* rodStart[newtonLanes::nLanes];
-    for (label lanei = 0; lanei < newtonLanes::nLanes; ++lanei)
+    for (const label nLanes : laneCounts())
     {
-        x[lanei] = straight.cdata();
-        rodStart[lanei] = (lanei == 2 ? rodsAcross : straight).cdata();
-    }
-    lanes.load(x, rodStart);
-    label iterations[newtonLanes::nLanes];
-    lanes.solve(a, 1e-10, 50, iterations);
+        newtonLanes lanes(nLanes);
+        lanes.resize(n);
+        const vector* x[newtonLanes::maxLanes];
+        const vector* rodStart[newtonLanes::maxLanes];
+        for (label lanei = 0; lanei < nLanes; ++lanei)
+        {
+            x[lanei] = straight.cdata();
+            rodStart[lanei] = (lanei == 2 ? rodsAcross : straight).cdata();
+        }
+        lanes.load(x, rodStart);
+        label iterations[newtonLanes::maxLanes];
+        lanes.solve(a, 1e-10, 50, iterations);
 
-    for (label lanei = 0; lanei < newtonLanes::nLanes; ++lanei)
+        for (label lanei = 0; lanei < nLanes; ++lanei)
+        {
+            if (lanei == 2)
+            {
+                EXPECT_EQ(iterations[lanei], 0) << nLanes << " lanes";
+                continue;
+            }
+            EXPECT_GT(iterations[lanei], 0) << nLanes << " lanes";
+            List<vector> solved(straight), v(n, Zero);
+            lanes.store(lanei, solved.data(), v.data(), 1);
+            for (label k = 0; k + 1 < n; ++k)
+            {
+                EXPECT_NEAR(mag(solved[k + 1] - solved[k]), a, 1e-9*a);
+            }
+        }
+    }
+}
+
+
+// Eight chains in eight lanes (AVX-512) and in two groups of four: the
+// same iterations, positions, velocities and velocity residuals, bit for
+// bit, the lanes doing the same arithmetic at either width
+TEST(newtonLanes, EightLanesAsTwoGroupsOfFour)
+{
+    if (newtonLanes::registerLanes() != 8)
     {
-        if (lanei == 2)
+        GTEST_SKIP() << "no AVX-512: eight lanes do not run here";
+    }
+
+    const label n = 30;
+    std::mt19937_64 gen(31);
+    List<List<vector>> start(8), x8(8), v8(8);
+    for (label c = 0; c < 8; ++c)
+    {
+        start[c] = randomWalk(n, a, point(5*c, 0, 0), gen);
+        x8[c] = start[c];
+        for (vector& x : x8[c]) x += gaussian(gen, 0.03*a);
+        v8[c] = List<vector>(n);
+        for (vector& v : v8[c]) v = gaussian(gen, 1);
+    }
+    List<List<vector>> x4(x8), v4(v8);
+
+    // Solve chains [first, first + nLanes) in lanes of the given width
+    const auto solveIn =
+    [&]
+    (
+        newtonLanes& lanes,
+        const label first,
+        List<List<vector>>& x,
+        List<List<vector>>& v,
+        label iterations[],
+        bool solved[],
+        scalar largest[]
+    )
+    {
+        const label nLanes = lanes.nLanes();
+        const vector* xs[newtonLanes::maxLanes];
+        const vector* rodStart[newtonLanes::maxLanes];
+        vector* vs[newtonLanes::maxLanes];
+        for (label lanei = 0; lanei < nLanes; ++lanei)
         {
-            EXPECT_EQ(iterations[lanei], 0);
-            continue;
+            xs[lanei] = x[first + lanei].cdata();
+            rodStart[lanei] = start[first + lanei].cdata();
+            vs[lanei] = v[first + lanei].data();
         }
-        EXPECT_GT(iterations[lanei], 0);
-        List<vector> solved(straight), v(n, Zero);
-        lanes.store(lanei, solved.data(), v.data(), 1);
-        for (label k = 0; k + 1 < n; ++k)
+        lanes.resize(n);
+        lanes.load(xs, rodStart);
+        lanes.solve(a, 1e-10, 50, iterations + first);
+        for (label lanei = 0; lanei < nLanes; ++lanei)
         {
-            EXPECT_NEAR(mag(solved[k + 1] - solved[k]), a, 1e-9*a);
+            ASSERT_GT(iterations[first + lanei], 0);
+            lanes.store
+            (
+                lanei, x[first + lanei].data(), vs[lanei], 1/dt
+            );
         }
+        lanes.loadVelocities(vs);
+        lanes.projectVelocities(solved + first, largest + first);
+        for (label lanei = 0; lanei < nLanes; ++lanei)
+        {
+            ASSERT_TRUE(solved[first + lanei]);
+            lanes.storeVelocities(lanei, vs[lanei]);
+        }
+    };
+
+    label iterations8[8], iterations4[8];
+    bool solved8[8], solved4[8];
+    scalar largest8[8], largest4[8];
+    newtonLanes eight(8), four(4);
+    solveIn(eight, 0, x8, v8, iterations8, solved8, largest8);
+    solveIn(four, 0, x4, v4, iterations4, solved4, largest4);
+    solveIn(four, 4, x4, v4, iterations4, solved4, largest4);
+
+    for (label c = 0; c < 8; ++c)
+    {
+        EXPECT_EQ(iterations8[c], iterations4[c]);
+        EXPECT_EQ
+        (
+            std::memcmp(&largest8[c], &largest4[c], sizeof(scalar)), 0
+        );
+        EXPECT_TRUE(sameBits(x8[c], x4[c])) << "chain " << c;
+        EXPECT_TRUE(sameBits(v8[c], v4[c])) << "chain " << c;
+        EXPECT_FALSE(sameBits(x8[c], start[c]));
     }
 }
 

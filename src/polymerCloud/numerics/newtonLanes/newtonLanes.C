@@ -11,18 +11,20 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "newtonLanes.H"
+
+#include <algorithm>
 #include <cmath>
 
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 // * * * * * * * * * * * * * * * * Dispatch  * * * * * * * * * * * * * * * //
 
-// As boxMuller: each kernel compiled for AVX-512, AVX2 and the x86-64
-// baseline, without fused multiply-adds, so all give the scalar path's
-// bits. The AVX-512 version (four lanes still, in EVEX instructions) is
-// for the processors boxMuller's AVX-512 transform runs on: there the
-// integration around the lanes ran faster with it than with the lanes
-// in AVX2 (the chainThroughput README, 2026-12-05)
+// As boxMuller: each kernel, for four lanes and for eight, compiled for
+// AVX-512, AVX2 and the x86-64 baseline, without fused multiply-adds, so
+// all give the scalar path's bits. Eight lanes run only where the loader
+// picks the AVX-512 version (registerLanes), one register each; four
+// elsewhere, one AVX2 register each (the chainThroughput README,
+// 2026-12-05)
 #if defined(__x86_64__) && defined(__has_attribute)
     #if __has_attribute(target_clones)
         #define LANE_TARGETS \
@@ -44,23 +46,35 @@ namespace polymer
 namespace newtonLaneKernels
 {
 
-typedef newtonLanes::lane lane;
+//- Eight lanes' values and four lanes' (GCC's vector extension:
+//  element-wise arithmetic, one instruction for the eight with AVX-512,
+//  for the four with AVX2). Aligned explicitly: compiled for the
+//  baseline, GCC gives a vector type only SSE2's 16 bytes.
+typedef double eightLanes __attribute__
+((
+    vector_size(8*sizeof(double)),
+    aligned(8*sizeof(double))
+));
+
+typedef double fourLanes __attribute__
+((
+    vector_size(4*sizeof(double)),
+    aligned(4*sizeof(double))
+));
 
 //- Lane masks: all bits set where a lane comparison holds
-typedef long laneMask __attribute__
-((
-    vector_size(sizeof(lane)),
-    aligned(sizeof(lane))
-));
+template<class Lanes>
+using laneMask = decltype(Lanes{} < Lanes{});
 
 
 //- The dot product of 3-vectors held component-wise, in Vector's order.
-//  Always inlined: no lane passes by value between functions compiled for
+//  Always inlined: no vector of lanes passes by value between functions compiled for
 //  different instruction sets, whose calling conventions for it differ
 //  (the kernels take lanes by pointer), and GCC's -Wpsabi notes on this
 //  file, which it gives at the end of the file, do not apply.
+template<class Lanes>
 __attribute__((always_inline))
-static inline lane dot(const lane* s, const lane* d)
+static inline Lanes dot(const Lanes* s, const Lanes* d)
 {
     return s[0]*d[0] + s[1]*d[1] + s[2]*d[2];
 }
@@ -70,83 +84,87 @@ static inline lane dot(const lane* s, const lane* d)
 // source: padded; largest: each lane's largest |sigma|. (Lanes pass by
 // pointer: by value their calling convention would differ between the
 // AVX2 and the baseline version.)
+template<class Lanes>
 LANE_TARGETS
 void linearise
 (
     const label nRods,
-    const lane* x,
-    const lane* d,
-    lane* lower,
-    lane* diagonal,
-    lane* upper,
-    lane* source,
+    const Lanes* x,
+    const Lanes* d,
+    Lanes* lower,
+    Lanes* diagonal,
+    Lanes* upper,
+    Lanes* source,
     const double a2,
-    lane* largestSigma
+    Lanes* largestSigma
 )
 {
-    const laneMask magnitudeBits = laneMask{} + 0x7fffffffffffffffL;
+    typedef laneMask<Lanes> mask;
+    const mask magnitudeBits = mask{} + 0x7fffffffffffffffL;
 
-    lane largest = {};
-    laneMask notNumber = {};
+    Lanes largest = {};
+    mask notNumber = {};
     for (label k = 0; k < nRods; ++k)
     {
-        const lane* xk = x + 3*k;
-        const lane s[3] = {xk[3] - xk[0], xk[4] - xk[1], xk[5] - xk[2]};
-        const lane sigma = dot(s, s) - a2;
-        const lane magSigma = __builtin_bit_cast
+        const Lanes* xk = x + 3*k;
+        const Lanes s[3] = {xk[3] - xk[0], xk[4] - xk[1], xk[5] - xk[2]};
+        const Lanes sigma = dot(s, s) - a2;
+        const Lanes magSigma = __builtin_bit_cast
         (
-            lane, __builtin_bit_cast(laneMask, sigma) & magnitudeBits
+            Lanes, __builtin_bit_cast(mask, sigma) & magnitudeBits
         );
 
         // A NaN is kept (maxOrNaN) without an ordered comparison, which
         // would raise the invalid-operation trap that OpenFOAM sets
-        const laneMask isNumber = (magSigma == magSigma);
+        const mask isNumber = (magSigma == magSigma);
         notNumber |= ~isNumber;
-        const lane number = isNumber ? magSigma : lane{};
+        const Lanes number = isNumber ? magSigma : Lanes{};
         largest = number > largest ? number : largest;
 
-        const lane* dk = d + 3*(k + 1);
+        const Lanes* dk = d + 3*(k + 1);
         lower[k] = -2*dot(s, dk - 3);
         diagonal[k] = 4*dot(s, dk);
         upper[k] = -2*dot(s, dk + 3);
         source[k + 1] = -sigma;
     }
-    *largestSigma = notNumber ? lane{} + NAN : largest;
+    *largestSigma = notNumber ? Lanes{} + NAN : largest;
 }
 
 
 // tridiagonalSystem::eliminate and backSubstitute, lane by lane, on the
 // right-hand side x. A zero pivot is replaced by 1 (no division by zero)
 // and its lane set in zeroPivot: its solution is not to be used.
+template<class Lanes>
 LANE_TARGETS
 void solveTridiagonal
 (
     const label n,
-    const lane* l,
-    const lane* d,
-    const lane* u,
-    lane* reciprocal,
-    lane* x,
-    laneMask* zeroPivot
+    const Lanes* l,
+    const Lanes* d,
+    const Lanes* u,
+    Lanes* reciprocal,
+    Lanes* x,
+    laneMask<Lanes>* zeroPivot
 )
 {
     const label m = n/2;
-    const lane unit = lane{} + 1;
+    const Lanes unit = Lanes{} + 1;
 
-    laneMask zero = (d[0] == 0) | (d[n - 1] == 0);
+    typedef laneMask<Lanes> mask;
+    mask zero = (d[0] == 0) | (d[n - 1] == 0);
 
-    lane down = unit/(zero ? unit : d[0]);
-    lane up = unit/(zero ? unit : d[n - 1]);
-    lane xDown = x[0];
-    lane xUp = x[n - 1];
+    Lanes down = unit/(zero ? unit : d[0]);
+    Lanes up = unit/(zero ? unit : d[n - 1]);
+    Lanes xDown = x[0];
+    Lanes xUp = x[n - 1];
     reciprocal[0] = down;
     reciprocal[n - 1] = up;
     for (label k = 1; k < m; ++k)
     {
-        const lane pivot = d[k] - (l[k]*u[k - 1])*down;
+        const Lanes pivot = d[k] - (l[k]*u[k - 1])*down;
         xDown = x[k] - (l[k]*down)*xDown;
         x[k] = xDown;
-        const laneMask isZero = (pivot == 0);
+        const mask isZero = (pivot == 0);
         zero |= isZero;
         down = unit/(isZero ? unit : pivot);
         reciprocal[k] = down;
@@ -154,18 +172,18 @@ void solveTridiagonal
         const label j = n - 1 - k;
         if (j > m)
         {
-            const lane pivot = d[j] - (u[j]*l[j + 1])*up;
+            const Lanes pivot = d[j] - (u[j]*l[j + 1])*up;
             xUp = x[j] - (u[j]*up)*xUp;
             x[j] = xUp;
-            const laneMask isZero = (pivot == 0);
+            const mask isZero = (pivot == 0);
             zero |= isZero;
             up = unit/(isZero ? unit : pivot);
             reciprocal[j] = up;
         }
     }
 
-    lane pivot = d[m];
-    lane xm = x[m];
+    Lanes pivot = d[m];
+    Lanes xm = x[m];
     if (m > 0)
     {
         pivot -= (l[m]*u[m - 1])*down;
@@ -176,13 +194,13 @@ void solveTridiagonal
         pivot -= (u[m]*l[m + 1])*up;
         xm -= (u[m]*up)*xUp;
     }
-    const laneMask isZero = (pivot == 0);
+    const mask isZero = (pivot == 0);
     zero |= isZero;
     reciprocal[m] = unit/(isZero ? unit : pivot);
     x[m] = xm*reciprocal[m];
 
-    lane xUpward = x[m];
-    lane xDownward = x[m];
+    Lanes xUpward = x[m];
+    Lanes xDownward = x[m];
     for (label k = 1; k <= m; ++k)
     {
         const label i = m - k;
@@ -202,17 +220,18 @@ void solveTridiagonal
 
 // newton::shift with alpha = 1 (whose product alpha*g is g): the beads of
 // rod k move by -g_k d_k and +g_k d_k, in rod order. g: padded.
+template<class Lanes>
 LANE_TARGETS
-void shift(const label nRods, lane* x, const lane* d, const lane* g)
+void shift(const label nRods, Lanes* x, const Lanes* d, const Lanes* g)
 {
     for (label k = 0; k < nRods; ++k)
     {
-        const lane* dk = d + 3*(k + 1);
-        const lane gk = g[k + 1];
-        lane* xk = x + 3*k;
+        const Lanes* dk = d + 3*(k + 1);
+        const Lanes gk = g[k + 1];
+        Lanes* xk = x + 3*k;
         for (int c = 0; c < 3; ++c)
         {
-            const lane dx = gk*dk[c];
+            const Lanes dx = gk*dk[c];
             xk[c] -= dx;
             xk[c + 3] += dx;
         }
@@ -222,23 +241,24 @@ void shift(const label nRods, lane* x, const lane* d, const lane* g)
 // rodVelocityProjection::project's system, lane by lane: rods r of the
 // positions x (padded with a zero rod at each end, as d), the velocities w
 // (3 per bead); source padded
+template<class Lanes>
 LANE_TARGETS
 void velocitySystem
 (
     const label nRods,
-    const lane* x,
-    const lane* w,
-    lane* r,
-    lane* lower,
-    lane* diagonal,
-    lane* upper,
-    lane* source
+    const Lanes* x,
+    const Lanes* w,
+    Lanes* r,
+    Lanes* lower,
+    Lanes* diagonal,
+    Lanes* upper,
+    Lanes* source
 )
 {
     for (label k = 0; k < nRods; ++k)
     {
-        const lane* xk = x + 3*k;
-        lane* rk = r + 3*(k + 1);
+        const Lanes* xk = x + 3*k;
+        Lanes* rk = r + 3*(k + 1);
         for (int c = 0; c < 3; ++c)
         {
             rk[c] = xk[c + 3] - xk[c];
@@ -246,9 +266,9 @@ void velocitySystem
     }
     for (label k = 0; k < nRods; ++k)
     {
-        const lane* rk = r + 3*(k + 1);
-        const lane* wk = w + 3*k;
-        const lane dw[3] = {wk[3] - wk[0], wk[4] - wk[1], wk[5] - wk[2]};
+        const Lanes* rk = r + 3*(k + 1);
+        const Lanes* wk = w + 3*k;
+        const Lanes dw[3] = {wk[3] - wk[0], wk[4] - wk[1], wk[5] - wk[2]};
         lower[k] = -dot(rk, rk - 3);
         diagonal[k] = 2*dot(rk, rk);
         upper[k] = -dot(rk, rk + 3);
@@ -260,145 +280,231 @@ void velocitySystem
 // rodVelocityProjection::kick, lane by lane: w changes by the multipliers
 // m (padded) along the rods r (padded); largest: each lane's largest
 // |r_k.(w_{k+1} - w_k)| after it (a NaN kept, as in linearise)
+template<class Lanes>
 LANE_TARGETS
 void kick
 (
     const label nBeads,
-    const lane* r,
-    const lane* m,
-    lane* w,
-    lane* largestVelocity
+    const Lanes* r,
+    const Lanes* m,
+    Lanes* w,
+    Lanes* largestVelocity
 )
 {
-    const laneMask magnitudeBits = laneMask{} + 0x7fffffffffffffffL;
+    typedef laneMask<Lanes> mask;
+    const mask magnitudeBits = mask{} + 0x7fffffffffffffffL;
 
     for (int c = 0; c < 3; ++c)
     {
         w[c] += m[1]*r[3 + c] - m[0]*r[c];
     }
 
-    lane largest = {};
-    laneMask notNumber = {};
+    Lanes largest = {};
+    mask notNumber = {};
     for (label k = 0; k + 1 < nBeads; ++k)
     {
-        const lane* rk = r + 3*(k + 1);
-        lane* wk = w + 3*k;
+        const Lanes* rk = r + 3*(k + 1);
+        Lanes* wk = w + 3*k;
         for (int c = 0; c < 3; ++c)
         {
             wk[c + 3] += m[k + 2]*rk[c + 3] - m[k + 1]*rk[c];
         }
-        const lane dw[3] = {wk[3] - wk[0], wk[4] - wk[1], wk[5] - wk[2]};
-        const lane relative = dot(rk, dw);
-        const lane magRelative = __builtin_bit_cast
+        const Lanes dw[3] = {wk[3] - wk[0], wk[4] - wk[1], wk[5] - wk[2]};
+        const Lanes relative = dot(rk, dw);
+        const Lanes magRelative = __builtin_bit_cast
         (
-            lane, __builtin_bit_cast(laneMask, relative) & magnitudeBits
+            Lanes, __builtin_bit_cast(mask, relative) & magnitudeBits
         );
-        const laneMask isNumber = (magRelative == magRelative);
+        const mask isNumber = (magRelative == magRelative);
         notNumber |= ~isNumber;
-        const lane number = isNumber ? magRelative : lane{};
+        const Lanes number = isNumber ? magRelative : Lanes{};
         largest = number > largest ? number : largest;
     }
-    *largestVelocity = notNumber ? lane{} + NAN : largest;
+    *largestVelocity = notNumber ? Lanes{} + NAN : largest;
 }
 
 // converged = positions in the lanes of keep (all bits set), unchanged in
 // the others; n lanes each. On the bits, so that the baseline version too
 // is whole-register logic (a lane-wise ?: there became a branch per
 // element, whose stores and wide reloads stalled).
+template<class Lanes>
 LANE_TARGETS
 void keepConverged
 (
     const label n,
-    const laneMask* keep,
-    const lane* positions,
-    lane* converged
+    const laneMask<Lanes>* keep,
+    const Lanes* positions,
+    Lanes* converged
 )
 {
-    const laneMask taken = *keep;
+    typedef laneMask<Lanes> mask;
+    const mask taken = *keep;
     for (label i = 0; i < n; ++i)
     {
         converged[i] = __builtin_bit_cast
         (
-            lane,
-            (__builtin_bit_cast(laneMask, positions[i]) & taken)
-          | (__builtin_bit_cast(laneMask, converged[i]) & ~taken)
+            Lanes,
+            (__builtin_bit_cast(mask, positions[i]) & taken)
+          | (__builtin_bit_cast(mask, converged[i]) & ~taken)
         );
     }
 }
 
 } // End namespace newtonLaneKernels
+
+// The lanes' layout, with the lane count N a constant: interleaving a
+// chain's vectors in and taking a lane's out in loops the compiler unrolls
+// (with N a run-time count it kept a loop a value)
+template<label N>
+static void interleaveLanes
+(
+    const label nVectors,
+    const vector* const chainValues[],
+    double* out
+)
+{
+    for (label i = 0; i < nVectors; ++i)
+    {
+        for (direction c = 0; c < 3; ++c)
+        {
+            for (label lanei = 0; lanei < N; ++lanei)
+            {
+                out[lanei] = chainValues[lanei][i][c];
+            }
+            out += N;
+        }
+    }
+}
+
+
+template<label N>
+static void interleaveRods
+(
+    const label nRods,
+    const vector* const rodStart[],
+    double* out
+)
+{
+    for (label k = 0; k < nRods; ++k)
+    {
+        for (direction c = 0; c < 3; ++c)
+        {
+            for (label lanei = 0; lanei < N; ++lanei)
+            {
+                const vector* r = rodStart[lanei];
+                out[lanei] = r[k + 1][c] - r[k][c];
+            }
+            out += N;
+        }
+    }
+}
+
+
+// As newton::iterate: v += (x - x*)/deltaT, x* being x before
+template<label N>
+static void storeLane
+(
+    const label nBeads,
+    const double* lane,
+    vector* x,
+    vector* v,
+    const scalar oneByDeltaT
+)
+{
+    for (label i = 0; i < nBeads; ++i)
+    {
+        const vector solved
+        (
+            lane[3*i*N], lane[(3*i + 1)*N], lane[(3*i + 2)*N]
+        );
+        v[i] += oneByDeltaT*(solved - x[i]);
+        x[i] = solved;
+    }
+}
+
+
+template<label N>
+static void laneVectors(const label nVectors, const double* lane, vector* v)
+{
+    for (label i = 0; i < nVectors; ++i)
+    {
+        v[i] = vector(lane[3*i*N], lane[(3*i + 1)*N], lane[(3*i + 2)*N]);
+    }
+}
+
 } // End namespace polymer
 } // End namespace Foam
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::polymer::newtonLanes::newtonLanes()
+Foam::polymer::newtonLanes::newtonLanes(const label nLanes)
 :
+    nLanes_(nLanes),
     nBeads_(0)
-{}
-
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::polymer::newtonLanes::linearise
-(
-    const scalar rodLength,
-    lane& residual
-)
 {
-    const scalar a2 = rodLength*rodLength;
-    lane largest;
-    newtonLaneKernels::linearise
-    (
-        nBeads_ - 1,
-        lanes(positions_),
-        lanes(rods_),
-        lanes(lower_),
-        lanes(diagonal_),
-        lanes(upper_),
-        lanes(solution_),
-        a2,
-        &largest
-    );
-    residual = largest/(2*a2);
-}
-
-
-void Foam::polymer::newtonLanes::solveSystem(bool solved[nLanes])
-{
-    newtonLaneKernels::laneMask zero;
-    newtonLaneKernels::solveTridiagonal
-    (
-        nBeads_ - 1,
-        lanes(lower_),
-        lanes(diagonal_),
-        lanes(upper_),
-        lanes(reciprocal_),
-        lanes(solution_) + 1,
-        &zero
-    );
-
-    for (label lanei = 0; lanei < nLanes; ++lanei)
+    if (nLanes != 4 && !(nLanes == 8 && registerLanes() == 8))
     {
-        solved[lanei] = !zero[lanei];
+        FatalErrorInFunction
+            << nLanes << " lanes: 4, or 8 on a processor with AVX-512"
+            << exit(FatalError);
     }
 }
 
 
-void Foam::polymer::newtonLanes::shift()
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::label Foam::polymer::newtonLanes::registerLanes()
 {
-    newtonLaneKernels::shift
-    (
-        nBeads_ - 1, lanes(positions_), lanes(rods_), lanes(solution_)
-    );
+    // The processors the kernels' AVX-512 version runs on (the loader's
+    // choice, from the same test)
+    #if defined(__x86_64__) && defined(__GNUC__)
+    if (__builtin_cpu_supports("avx512f"))
+    {
+        return 8;
+    }
+    #endif
+    return 4;
 }
 
 
-void Foam::polymer::newtonLanes::freeze(const bool active[nLanes])
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::polymer::newtonLanes::resize
+(
+    laneArray& array,
+    const label n
+) const
+{
+    array.resize((n*nLanes_ + maxLanes - 1)/maxLanes);
+}
+
+
+void Foam::polymer::newtonLanes::interleave
+(
+    const vector* const chainValues[],
+    laneArray& lanesOf
+) const
+{
+    if (nLanes_ == 8)
+    {
+        interleaveLanes<8>(nBeads_, chainValues, values(lanesOf));
+    }
+    else
+    {
+        interleaveLanes<4>(nBeads_, chainValues, values(lanesOf));
+    }
+}
+
+
+void Foam::polymer::newtonLanes::freeze(const bool active[])
 {
     const label nRods = nBeads_ - 1;
-    for (label lanei = 0; lanei < nLanes; ++lanei)
+    double* lower = values(lower_);
+    double* diagonal = values(diagonal_);
+    double* upper = values(upper_);
+    double* solution = values(solution_) + nLanes_;
+    for (label lanei = 0; lanei < nLanes_; ++lanei)
     {
         if (active[lanei])
         {
@@ -406,113 +512,104 @@ void Foam::polymer::newtonLanes::freeze(const bool active[nLanes])
         }
         for (label k = 0; k < nRods; ++k)
         {
-            lower_[k].value[lanei] = 0;
-            diagonal_[k].value[lanei] = 1;
-            upper_[k].value[lanei] = 0;
-            solution_[k + 1].value[lanei] = 0;
+            const label at = k*nLanes_ + lanei;
+            lower[at] = 0;
+            diagonal[at] = 1;
+            upper[at] = 0;
+            solution[at] = 0;
         }
     }
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::polymer::newtonLanes::resize(const label nBeads)
-{
-    if (nBeads == nBeads_)
-    {
-        return;
-    }
-
-    // The padding rods and solutions stay zero: load and the solves write
-    // only the chain's own
-    nBeads_ = nBeads;
-    const label nRods = nBeads - 1;
-    const laneElement zero{};
-
-    positions_.resize(3*nBeads);
-    converged_.resize(3*nBeads);
-    velocities_.resize(3*nBeads);
-    rods_.assign(3*(nRods + 2), zero);
-    lower_.resize(nRods);
-    diagonal_.resize(nRods);
-    upper_.resize(nRods);
-    reciprocal_.resize(nRods);
-    solution_.assign(nRods + 2, zero);
-}
-
-
-void Foam::polymer::newtonLanes::interleave
+template<class Lanes>
+void Foam::polymer::newtonLanes::linearise
 (
-    const vector* const values[nLanes],
-    laneArray& lanesOf
-) const
-{
-    for (label i = 0; i < nBeads_; ++i)
-    {
-        for (direction c = 0; c < 3; ++c)
-        {
-            lane value;
-            for (label lanei = 0; lanei < nLanes; ++lanei)
-            {
-                value[lanei] = values[lanei][i][c];
-            }
-            lanesOf[3*i + c].value = value;
-        }
-    }
-}
-
-
-void Foam::polymer::newtonLanes::load
-(
-    const vector* const x[nLanes],
-    const vector* const rodStart[nLanes]
+    const scalar rodLength,
+    Lanes& residual
 )
 {
-    interleave(x, positions_);
-    for (label k = 0; k + 1 < nBeads_; ++k)
+    const scalar a2 = rodLength*rodLength;
+    Lanes largest;
+    newtonLaneKernels::linearise
+    (
+        nBeads_ - 1,
+        lanes<Lanes>(positions_),
+        lanes<Lanes>(rods_),
+        lanes<Lanes>(lower_),
+        lanes<Lanes>(diagonal_),
+        lanes<Lanes>(upper_),
+        lanes<Lanes>(solution_),
+        a2,
+        &largest
+    );
+    residual = largest/(2*a2);
+}
+
+
+template<class Lanes>
+void Foam::polymer::newtonLanes::solveSystem(bool solved[])
+{
+    newtonLaneKernels::laneMask<Lanes> zero;
+    newtonLaneKernels::solveTridiagonal
+    (
+        nBeads_ - 1,
+        lanes<Lanes>(lower_),
+        lanes<Lanes>(diagonal_),
+        lanes<Lanes>(upper_),
+        lanes<Lanes>(reciprocal_),
+        lanes<Lanes>(solution_) + 1,
+        &zero
+    );
+
+    for (label lanei = 0; lanei < nLanes_; ++lanei)
     {
-        for (direction c = 0; c < 3; ++c)
-        {
-            lane value;
-            for (label lanei = 0; lanei < nLanes; ++lanei)
-            {
-                const vector* r = rodStart[lanei];
-                value[lanei] = r[k + 1][c] - r[k][c];
-            }
-            rods_[3*(k + 1) + c].value = value;
-        }
+        solved[lanei] = !zero[lanei];
     }
 }
 
 
-void Foam::polymer::newtonLanes::solve
+template<class Lanes>
+void Foam::polymer::newtonLanes::shift()
+{
+    newtonLaneKernels::shift
+    (
+        nBeads_ - 1,
+        lanes<Lanes>(positions_),
+        lanes<Lanes>(rods_),
+        lanes<Lanes>(solution_)
+    );
+}
+
+
+template<class Lanes>
+void Foam::polymer::newtonLanes::solveLanes
 (
     const scalar rodLength,
     const scalar tolerance,
     const label maxIterations,
-    label iterations[nLanes]
+    label iterations[]
 )
 {
     // newton::solveLengths on its usual path: a full step whose residual
     // falls, until it is within the tolerance
-    bool active[nLanes];
-    scalar lastResidual[nLanes];
-    std::fill(lastResidual, lastResidual + nLanes, GREAT);
-    for (label lanei = 0; lanei < nLanes; ++lanei)
+    bool active[maxLanes];
+    scalar lastResidual[maxLanes];
+    for (label lanei = 0; lanei < nLanes_; ++lanei)
     {
         active[lanei] = true;
+        lastResidual[lanei] = GREAT;
         iterations[lanei] = 0;
     }
 
-    lane residual;
+    Lanes residual;
     linearise(rodLength, residual);
     for (label iter = 0; iter <= maxIterations; ++iter)
     {
         bool anyActive = false;
         bool anyConverged = false;
-        newtonLaneKernels::laneMask converging = {};
-        for (label lanei = 0; lanei < nLanes; ++lanei)
+        newtonLaneKernels::laneMask<Lanes> converging = {};
+        for (label lanei = 0; lanei < nLanes_; ++lanei)
         {
             if (!active[lanei])
             {
@@ -544,7 +641,10 @@ void Foam::polymer::newtonLanes::solve
         {
             newtonLaneKernels::keepConverged
             (
-                3*nBeads_, &converging, lanes(positions_), lanes(converged_)
+                3*nBeads_,
+                &converging,
+                lanes<Lanes>(positions_),
+                lanes<Lanes>(converged_)
             );
         }
         if (!anyActive)
@@ -553,23 +653,23 @@ void Foam::polymer::newtonLanes::solve
         }
 
         freeze(active);
-        bool solved[nLanes];
-        solveSystem(solved);
-        for (label lanei = 0; lanei < nLanes; ++lanei)
+        bool solved[maxLanes];
+        solveSystem<Lanes>(solved);
+        for (label lanei = 0; lanei < nLanes_; ++lanei)
         {
             if (active[lanei] && !solved[lanei])
             {
                 active[lanei] = false;
                 for (label k = 1; k < nBeads_; ++k)
                 {
-                    solution_[k].value[lanei] = 0;
+                    values(solution_)[k*nLanes_ + lanei] = 0;
                 }
             }
         }
 
-        shift();
+        shift<Lanes>();
         linearise(rodLength, residual);
-        for (label lanei = 0; lanei < nLanes; ++lanei)
+        for (label lanei = 0; lanei < nLanes_; ++lanei)
         {
             if
             (
@@ -588,10 +688,117 @@ void Foam::polymer::newtonLanes::solve
 }
 
 
-void Foam::polymer::newtonLanes::loadVelocities
+template<class Lanes>
+void Foam::polymer::newtonLanes::projectLanes
 (
-    const vector* const v[nLanes]
+    bool solved[],
+    scalar largest[]
 )
+{
+    newtonLaneKernels::velocitySystem
+    (
+        nBeads_ - 1,
+        lanes<Lanes>(converged_),
+        lanes<Lanes>(velocities_),
+        lanes<Lanes>(rods_),
+        lanes<Lanes>(lower_),
+        lanes<Lanes>(diagonal_),
+        lanes<Lanes>(upper_),
+        lanes<Lanes>(solution_)
+    );
+    solveSystem<Lanes>(solved);
+
+    Lanes largestVelocity;
+    newtonLaneKernels::kick
+    (
+        nBeads_,
+        lanes<Lanes>(rods_),
+        lanes<Lanes>(solution_),
+        lanes<Lanes>(velocities_),
+        &largestVelocity
+    );
+    for (label lanei = 0; lanei < nLanes_; ++lanei)
+    {
+        largest[lanei] = largestVelocity[lanei];
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::polymer::newtonLanes::resize(const label nBeads)
+{
+    if (nBeads == nBeads_)
+    {
+        return;
+    }
+
+    // The padding rods and solutions stay zero: load and the solves write
+    // only the chain's own
+    nBeads_ = nBeads;
+    const label nRods = nBeads - 1;
+
+    resize(positions_, 3*nBeads);
+    resize(converged_, 3*nBeads);
+    resize(velocities_, 3*nBeads);
+    resize(rods_, 3*(nRods + 2));
+    resize(lower_, nRods);
+    resize(diagonal_, nRods);
+    resize(upper_, nRods);
+    resize(reciprocal_, nRods);
+    resize(solution_, nRods + 2);
+    std::fill(rods_.begin(), rods_.end(), laneChunk{});
+    std::fill(solution_.begin(), solution_.end(), laneChunk{});
+}
+
+
+void Foam::polymer::newtonLanes::load
+(
+    const vector* const x[],
+    const vector* const rodStart[]
+)
+{
+    interleave(x, positions_);
+
+    // Rod k at 3 (k + 1): the first is padding
+    double* rods = values(rods_) + 3*nLanes_;
+    if (nLanes_ == 8)
+    {
+        interleaveRods<8>(nBeads_ - 1, rodStart, rods);
+    }
+    else
+    {
+        interleaveRods<4>(nBeads_ - 1, rodStart, rods);
+    }
+}
+
+
+void Foam::polymer::newtonLanes::solve
+(
+    const scalar rodLength,
+    const scalar tolerance,
+    const label maxIterations,
+    label iterations[]
+)
+{
+    if (nLanes_ == 8)
+    {
+        solveLanes<newtonLaneKernels::eightLanes>
+        (
+            rodLength, tolerance, maxIterations, iterations
+        );
+    }
+    else
+    {
+        solveLanes<newtonLaneKernels::fourLanes>
+        (
+            rodLength, tolerance, maxIterations, iterations
+        );
+    }
+}
+
+
+void Foam::polymer::newtonLanes::loadVelocities(const vector* const v[])
 {
     interleave(v, velocities_);
 }
@@ -599,36 +806,17 @@ void Foam::polymer::newtonLanes::loadVelocities
 
 void Foam::polymer::newtonLanes::projectVelocities
 (
-    bool solved[nLanes],
-    scalar largest[nLanes]
+    bool solved[],
+    scalar largest[]
 )
 {
-    const label nRods = nBeads_ - 1;
-    newtonLaneKernels::velocitySystem
-    (
-        nRods,
-        lanes(converged_),
-        lanes(velocities_),
-        lanes(rods_),
-        lanes(lower_),
-        lanes(diagonal_),
-        lanes(upper_),
-        lanes(solution_)
-    );
-    solveSystem(solved);
-
-    lane largestVelocity;
-    newtonLaneKernels::kick
-    (
-        nBeads_,
-        lanes(rods_),
-        lanes(solution_),
-        lanes(velocities_),
-        &largestVelocity
-    );
-    for (label lanei = 0; lanei < nLanes; ++lanei)
+    if (nLanes_ == 8)
     {
-        largest[lanei] = largestVelocity[lanei];
+        projectLanes<newtonLaneKernels::eightLanes>(solved, largest);
+    }
+    else
+    {
+        projectLanes<newtonLaneKernels::fourLanes>(solved, largest);
     }
 }
 
@@ -639,12 +827,14 @@ void Foam::polymer::newtonLanes::storeVelocities
     vector* v
 ) const
 {
-    for (label i = 0; i < nBeads_; ++i)
+    const double* lane = values(velocities_) + lanei;
+    if (nLanes_ == 8)
     {
-        for (direction c = 0; c < 3; ++c)
-        {
-            v[i][c] = velocities_[3*i + c].value[lanei];
-        }
+        laneVectors<8>(nBeads_, lane, v);
+    }
+    else
+    {
+        laneVectors<4>(nBeads_, lane, v);
     }
 }
 
@@ -657,17 +847,14 @@ void Foam::polymer::newtonLanes::store
     const scalar oneByDeltaT
 ) const
 {
-    // As newton::iterate: v += (x - x*)/deltaT, x* being x before
-    for (label i = 0; i < nBeads_; ++i)
+    const double* lane = values(converged_) + lanei;
+    if (nLanes_ == 8)
     {
-        const vector solved
-        (
-            converged_[3*i].value[lanei],
-            converged_[3*i + 1].value[lanei],
-            converged_[3*i + 2].value[lanei]
-        );
-        v[i] += oneByDeltaT*(solved - x[i]);
-        x[i] = solved;
+        storeLane<8>(nBeads_, lane, x, v, oneByDeltaT);
+    }
+    else
+    {
+        storeLane<4>(nBeads_, lane, x, v, oneByDeltaT);
     }
 }
 

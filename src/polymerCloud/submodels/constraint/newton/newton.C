@@ -269,10 +269,10 @@ void Foam::polymer::constraintModels::newton::correctInLanes
 
     // A group of fewer chains than lanes repeats its last chain
     lanes_.resize(n);
-    const vector* x[newtonLanes::nLanes];
-    const vector* rodStart[newtonLanes::nLanes];
-    vector* v[newtonLanes::nLanes];
-    for (label lanei = 0; lanei < newtonLanes::nLanes; ++lanei)
+    const vector* x[newtonLanes::maxLanes];
+    const vector* rodStart[newtonLanes::maxLanes];
+    vector* v[newtonLanes::maxLanes];
+    for (label lanei = 0; lanei < lanes_.nLanes(); ++lanei)
     {
         const label first = chains.start(group[min(lanei, nGroup - 1)]);
         x[lanei] = chains.positions().cdata() + first;
@@ -283,7 +283,7 @@ void Foam::polymer::constraintModels::newton::correctInLanes
     }
     lanes_.load(x, rodStart);
 
-    label iterations[newtonLanes::nLanes];
+    label iterations[newtonLanes::maxLanes];
     lanes_.solve(type.rodLength(), tolerance_, maxIterations_, iterations);
 
     // The converged chains take their positions, and their velocities the
@@ -304,8 +304,8 @@ void Foam::polymer::constraintModels::newton::correctInLanes
     }
     lanes_.loadVelocities(v);
 
-    bool velocitiesSolved[newtonLanes::nLanes];
-    scalar largestVelocity[newtonLanes::nLanes];
+    bool velocitiesSolved[newtonLanes::maxLanes];
+    scalar largestVelocity[newtonLanes::maxLanes];
     lanes_.projectVelocities(velocitiesSolved, largestVelocity);
 
     // In the group's order, as one at a time: counts, reports and failures
@@ -397,7 +397,7 @@ void Foam::polymer::constraintModels::newton::correct
         }
         const label typei = chains.typeIndex(c);
         groups[typei][nGrouped[typei]++] = c;
-        if (nGrouped[typei] == newtonLanes::nLanes)
+        if (nGrouped[typei] == lanes_.nLanes())
         {
             solve(typei);
         }
