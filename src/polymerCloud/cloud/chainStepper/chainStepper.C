@@ -432,7 +432,15 @@ void Foam::polymer::chainStepper::updateDrift()
         model.addForce(chains_, force_);
     }
 
-    drift_ = flow_.beadVelocity();
+    if (flow_.quiescent())
+    {
+        drift_.resize(chains_.nBeads());
+        drift_ = Zero;
+    }
+    else
+    {
+        drift_ = flow_.beadVelocity();
+    }
     for (label c = 0; c < chains_.nChains(); ++c)
     {
         const scalar mobility = 1/chains_.type(c).friction();

@@ -32,14 +32,10 @@ Foam::polymer::flowModels::noFlow::noFlow
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::polymer::flowModels::noFlow::update(const polymerChains& chains)
+void Foam::polymer::flowModels::noFlow::update(const polymerChains&)
 {
-    // The velocities stay zero: only a change of bead count costs anything
-    if (beadVelocity_.size() != chains.nBeads())
-    {
-        beadVelocity_.setSize(chains.nBeads());
-        beadVelocity_ = Zero;
-    }
+    // No velocities kept: the bead velocities stay an empty list, which
+    // its users read as a solvent at rest (24 bytes a bead saved)
 }
 
 
