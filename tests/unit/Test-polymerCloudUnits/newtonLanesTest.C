@@ -12,8 +12,10 @@ Description
     chains across the other's, the last group of a type short of the lanes,
     repeating its last chain; the second type of 7, 3 or 2 beads, the
     shortest systems of one or two rows), a ring type among open chains,
-    and a NaN in one chain. Eight lanes and two groups of four give the
-    same bits (on processors with AVX-512; skipped elsewhere).
+    and a NaN in one chain; a scene of 15 chains whose last groups are
+    short (with eight lanes, a type's last two chains take four lanes).
+    Eight lanes and two groups of four give the same bits (on processors
+    with AVX-512; skipped elsewhere).
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>
@@ -41,6 +43,7 @@ struct laneScene
     bool mixedTypes;
     bool withNaN;
     label nShort = 7;
+    label repeats = 3;
 };
 
 // Chains of 20 beads (type 0) and 7 beads (type 1, a ring when asked), in
@@ -63,7 +66,7 @@ List<vector> makeScene
 {
     const label pattern[] = {0, 0, 0, 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1};
     label id = 0;
-    for (label repeat = 0; repeat < 3; ++repeat)
+    for (label repeat = 0; repeat < scene.repeats; ++repeat)
     {
         for (const label typei : pattern)
         {
@@ -115,7 +118,8 @@ std::string sceneName(const ::testing::TestParamInfo<laneScene>& info)
         s.model + "_" + s.directions + "_step" + std::to_string(std::lround(100*s.step/a))
       + "_iter" + std::to_string(s.maxIterations)
       + (s.mixedTypes ? "_mixed" + std::to_string(s.nShort) : "")
-      + (s.withNaN ? "_NaN" : "");
+      + (s.withNaN ? "_NaN" : "")
+      + (s.repeats != 3 ? "_x" + std::to_string(s.repeats) : "");
 }
 
 } // End anonymous namespace
@@ -189,7 +193,8 @@ INSTANTIATE_TEST_SUITE_P
         laneScene{"exactRods", "start", 0.6*a, 50, false, false},
         laneScene{"newton", "start", 0.02*a, 50, true, false, 2},
         laneScene{"newton", "start", 0.02*a, 50, true, false, 3},
-        laneScene{"newton", "end", 0.3*a, 50, true, false, 2}
+        laneScene{"newton", "end", 0.3*a, 50, true, false, 2},
+        laneScene{"newton", "start", 0.02*a, 50, true, false, 7, 1}
     ),
     sceneName
 );

@@ -73,7 +73,9 @@ Foam::polymer::constraintModels::newton::newton
     rods_(),
     system_(),
     solution_(),
-    velocityProjection_()
+    velocityProjection_(),
+    lanes_(),
+    fourLanes_(4)
 {}
 
 
@@ -267,12 +269,15 @@ void Foam::polymer::constraintModels::newton::correctInLanes
     const label n = type.nBeads();
     const bool alongStart = (directions_ == SHAKE::directionType::start);
 
-    // A group of fewer chains than lanes repeats its last chain
-    lanes_.resize(n);
+    // A group of fewer chains than lanes repeats its last chain; one of at
+    // most four takes four lanes, the same arithmetic in fewer
+    newtonLanes& lanes =
+        (nGroup <= fourLanes_.nLanes()) ? fourLanes_ : lanes_;
+    lanes.resize(n);
     const vector* x[newtonLanes::maxLanes];
     const vector* rodStart[newtonLanes::maxLanes];
     vector* v[newtonLanes::maxLanes];
-    for (label lanei = 0; lanei < lanes_.nLanes(); ++lanei)
+    for (label lanei = 0; lanei < lanes.nLanes(); ++lanei)
     {
         const label first = chains.start(group[min(lanei, nGroup - 1)]);
         x[lanei] = chains.positions().cdata() + first;
@@ -281,10 +286,10 @@ void Foam::polymer::constraintModels::newton::correctInLanes
           + first;
         v[lanei] = chains.velocities().data() + first;
     }
-    lanes_.load(x, rodStart);
+    lanes.load(x, rodStart);
 
     label iterations[newtonLanes::maxLanes];
-    lanes_.solve(type.rodLength(), tolerance_, maxIterations_, iterations);
+    lanes.solve(type.rodLength(), tolerance_, maxIterations_, iterations);
 
     // The converged chains take their positions, and their velocities the
     // beads' moves from x* (as iterate), for the velocity solve in lanes
@@ -293,7 +298,7 @@ void Foam::polymer::constraintModels::newton::correctInLanes
     {
         if (iterations[lanei])
         {
-            lanes_.store
+            lanes.store
             (
                 lanei,
                 chains.positions().data() + chains.start(group[lanei]),
@@ -302,11 +307,11 @@ void Foam::polymer::constraintModels::newton::correctInLanes
             );
         }
     }
-    lanes_.loadVelocities(v);
+    lanes.loadVelocities(v);
 
     bool velocitiesSolved[newtonLanes::maxLanes];
     scalar largestVelocity[newtonLanes::maxLanes];
-    lanes_.projectVelocities(velocitiesSolved, largestVelocity);
+    lanes.projectVelocities(velocitiesSolved, largestVelocity);
 
     // In the group's order, as one at a time: counts, reports and failures
     for (label lanei = 0; lanei < nGroup; ++lanei)
@@ -328,7 +333,7 @@ void Foam::polymer::constraintModels::newton::correctInLanes
         if (velocitiesSolved[lanei])
         {
             // As correctChainVelocities
-            lanes_.storeVelocities(lanei, v[lanei]);
+            lanes.storeVelocities(lanei, v[lanei]);
             residual =
                 largestVelocity[lanei]
                /velocityScale(type, v[lanei], n, velocityTolerance_);
