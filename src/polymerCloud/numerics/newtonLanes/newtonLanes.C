@@ -352,47 +352,20 @@ void keepConverged
 
 } // End namespace newtonLaneKernels
 
-// The lanes' layout, with the lane count N a constant: interleaving a
-// chain's vectors in and taking a lane's out in loops the compiler unrolls
-// (with N a run-time count it kept a loop a value)
-template<label N>
-static void interleaveLanes
-(
-    const label nVectors,
-    const vector* const chainValues[],
-    double* out
-)
+// The lanes' layout, with the lane count N a constant: interleaving the
+// chains' values in and taking a lane's out in loops the compiler unrolls
+// (with N a run-time count it kept a loop a value). value(lanei, i, c):
+// component c of the i-th of n vectors of lane lanei's chain
+template<label N, class Value>
+static void interleaveLanes(const label n, const Value& value, double* out)
 {
-    for (label i = 0; i < nVectors; ++i)
+    for (label i = 0; i < n; ++i)
     {
         for (direction c = 0; c < 3; ++c)
         {
             for (label lanei = 0; lanei < N; ++lanei)
             {
-                out[lanei] = chainValues[lanei][i][c];
-            }
-            out += N;
-        }
-    }
-}
-
-
-template<label N>
-static void interleaveRods
-(
-    const label nRods,
-    const vector* const rodStart[],
-    double* out
-)
-{
-    for (label k = 0; k < nRods; ++k)
-    {
-        for (direction c = 0; c < 3; ++c)
-        {
-            for (label lanei = 0; lanei < N; ++lanei)
-            {
-                const vector* r = rodStart[lanei];
-                out[lanei] = r[k + 1][c] - r[k][c];
+                out[lanei] = value(lanei, i, c);
             }
             out += N;
         }
@@ -486,13 +459,23 @@ void Foam::polymer::newtonLanes::interleave
     laneArray& lanesOf
 ) const
 {
+    const auto value = [chainValues]
+    (
+        const label lanei,
+        const label i,
+        const direction c
+    )
+    {
+        return chainValues[lanei][i][c];
+    };
+
     if (nLanes_ == 8)
     {
-        interleaveLanes<8>(nBeads_, chainValues, values(lanesOf));
+        interleaveLanes<8>(nBeads_, value, values(lanesOf));
     }
     else
     {
-        interleaveLanes<4>(nBeads_, chainValues, values(lanesOf));
+        interleaveLanes<4>(nBeads_, value, values(lanesOf));
     }
 }
 
@@ -761,14 +744,24 @@ void Foam::polymer::newtonLanes::load
     interleave(x, positions_);
 
     // Rod k at 3 (k + 1): the first is padding
+    const auto rod = [rodStart]
+    (
+        const label lanei,
+        const label k,
+        const direction c
+    )
+    {
+        return rodStart[lanei][k + 1][c] - rodStart[lanei][k][c];
+    };
+
     double* rods = values(rods_) + 3*nLanes_;
     if (nLanes_ == 8)
     {
-        interleaveRods<8>(nBeads_ - 1, rodStart, rods);
+        interleaveLanes<8>(nBeads_ - 1, rod, rods);
     }
     else
     {
-        interleaveRods<4>(nBeads_ - 1, rodStart, rods);
+        interleaveLanes<4>(nBeads_ - 1, rod, rods);
     }
 }
 
