@@ -373,6 +373,14 @@ static void interleaveLanes(const label n, const Value& value, double* out)
 }
 
 
+// Vector i of a lane (its first value at lane)
+template<label N>
+static inline vector laneVector(const double* lane, const label i)
+{
+    return vector(lane[3*i*N], lane[(3*i + 1)*N], lane[(3*i + 2)*N]);
+}
+
+
 // As newton::iterate: v += (x - x*)/deltaT, x* being x before
 template<label N>
 static void storeLane
@@ -386,10 +394,7 @@ static void storeLane
 {
     for (label i = 0; i < nBeads; ++i)
     {
-        const vector solved
-        (
-            lane[3*i*N], lane[(3*i + 1)*N], lane[(3*i + 2)*N]
-        );
+        const vector solved = laneVector<N>(lane, i);
         v[i] += oneByDeltaT*(solved - x[i]);
         x[i] = solved;
     }
@@ -401,7 +406,7 @@ static void laneVectors(const label nVectors, const double* lane, vector* v)
 {
     for (label i = 0; i < nVectors; ++i)
     {
-        v[i] = vector(lane[3*i*N], lane[(3*i + 1)*N], lane[(3*i + 2)*N]);
+        v[i] = laneVector<N>(lane, i);
     }
 }
 
