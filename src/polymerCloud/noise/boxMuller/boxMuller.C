@@ -289,38 +289,35 @@ static inline void transformPairs(const label first, scalar* u)
 }
 
 
-// The pairs p = first, ..., first + n - 1 of words in u's second half:
-// pair p's uniforms are those of the low and the high 32 bits of the word
-// in u[nPairs + p], its deviates go to u[2 p] and u[2 p + 1]. With Bits a
-// 64-bit integer (n = 1) or a block of them (n = blockSize), Real the
-// matching double or block. The words are copied out (memcpy: their
-// storage is doubles') before any deviate is written, and the deviates
-// stop short of the words of the pairs after these (2 (first + n) <=
-// nPairs + first + n while first + n <= nPairs).
-template<class Real, class Bits>
+// The block of pairs p = first, ..., first + blockSize - 1 of words in
+// u's second half: pair p's uniforms are those of the low and the high 32
+// bits of the word in u[nPairs + p], its deviates go to u[2 p] and
+// u[2 p + 1]. The words are copied out (memcpy: their storage is
+// doubles') before any deviate is written, and the deviates stop short
+// of the words of the pairs after these (2 (first + blockSize) <= nPairs
+// + first + blockSize while first + blockSize <= nPairs).
 __attribute__((always_inline))
-static inline void transformWordPairs
+static inline void transformWordBlock
 (
     const label nPairs,
     const label first,
     scalar* u
 )
 {
-    constexpr int n = sizeof(Bits)/sizeof(uint64_t);
-    Bits word;
+    blockBits word;
     std::memcpy(&word, u + nPairs + first, sizeof(word));
 
     const uint64_t low32 = 0xffffffffULL;
-    Real x, y;
+    block x, y;
     normalPair
     (
-        Real(uniformOfWord(word & low32)),
-        Real(uniformOfWord(word >> 32)),
+        block(uniformOfWord(word & low32)),
+        block(uniformOfWord(word >> 32)),
         x,
         y
     );
 
-    for (int j = 0; j < n; ++j)
+    for (int j = 0; j < blockSize; ++j)
     {
         u[2*(first + j)] = reinterpret_cast<const double*>(&x)[j];
         u[2*(first + j) + 1] = reinterpret_cast<const double*>(&y)[j];
@@ -356,7 +353,7 @@ void Foam::polymer::boxMuller::transformWords(const label nPairs, scalar* u)
     label p = 0;
     for (; p + blockSize <= nPairs; p += blockSize)
     {
-        transformWordPairs<block, blockBits>(nPairs, p, u);
+        transformWordBlock(nPairs, p, u);
     }
 
     // The pairs left as one more block, filled with copies of the last
@@ -373,7 +370,7 @@ void Foam::polymer::boxMuller::transformWords(const label nPairs, scalar* u)
             const label word = nPairs + p + min(j, nLeft - 1);
             std::memcpy(tail + blockSize + j, u + word, sizeof(scalar));
         }
-        transformWordPairs<block, blockBits>(blockSize, 0, tail);
+        transformWordBlock(blockSize, 0, tail);
         for (label j = 0; j < 2*nLeft; ++j)
         {
             u[2*p + j] = tail[j];

@@ -14,6 +14,7 @@ License
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #pragma GCC diagnostic ignored "-Wpsabi"
 
@@ -68,10 +69,10 @@ using laneMask = decltype(Lanes{} < Lanes{});
 
 
 //- The dot product of 3-vectors held component-wise, in Vector's order.
-//  Always inlined: no vector of lanes passes by value between functions compiled for
-//  different instruction sets, whose calling conventions for it differ
-//  (the kernels take lanes by pointer), and GCC's -Wpsabi notes on this
-//  file, which it gives at the end of the file, do not apply.
+//  Always inlined: no vector of lanes passes by value between functions
+//  compiled for different instruction sets, whose calling conventions for
+//  it differ (the kernels take lanes by pointer), and GCC's -Wpsabi notes
+//  on this file, which it gives at the end of the file, do not apply.
 template<class Lanes>
 __attribute__((always_inline))
 static inline Lanes dot(const Lanes* s, const Lanes* d)
@@ -410,6 +411,40 @@ static void laneVectors(const label nVectors, const double* lane, vector* v)
     }
 }
 
+
+// The vector of lanes of N lanes
+template<label N>
+struct lanesOfWidth;
+
+template<>
+struct lanesOfWidth<4>
+{
+    typedef newtonLaneKernels::fourLanes type;
+};
+
+template<>
+struct lanesOfWidth<8>
+{
+    typedef newtonLaneKernels::eightLanes type;
+};
+
+
+// action(width), the lane count nLanes as a constant
+// (decltype(width)::value): the one place the run-time count becomes a
+// compile-time one
+template<class Action>
+static inline void atWidth(const label nLanes, const Action& action)
+{
+    if (nLanes == 8)
+    {
+        action(std::integral_constant<label, 8>());
+    }
+    else
+    {
+        action(std::integral_constant<label, 4>());
+    }
+}
+
 } // End namespace polymer
 } // End namespace Foam
 
@@ -474,14 +509,11 @@ void Foam::polymer::newtonLanes::interleave
         return chainValues[lanei][i][c];
     };
 
-    if (nLanes_ == 8)
+    atWidth(nLanes_, [&](auto width)
     {
-        interleaveLanes<8>(nBeads_, value, values(lanesOf));
-    }
-    else
-    {
-        interleaveLanes<4>(nBeads_, value, values(lanesOf));
-    }
+        constexpr label N = decltype(width)::value;
+        interleaveLanes<N>(nBeads_, value, values(lanesOf));
+    });
 }
 
 
@@ -760,14 +792,10 @@ void Foam::polymer::newtonLanes::load
     };
 
     double* rods = values(rods_) + 3*nLanes_;
-    if (nLanes_ == 8)
+    atWidth(nLanes_, [&](auto width)
     {
-        interleaveLanes<8>(nBeads_ - 1, rod, rods);
-    }
-    else
-    {
-        interleaveLanes<4>(nBeads_ - 1, rod, rods);
-    }
+        interleaveLanes<decltype(width)::value>(nBeads_ - 1, rod, rods);
+    });
 }
 
 
@@ -779,20 +807,14 @@ void Foam::polymer::newtonLanes::solve
     label iterations[]
 )
 {
-    if (nLanes_ == 8)
+    atWidth(nLanes_, [&](auto width)
     {
-        solveLanes<newtonLaneKernels::eightLanes>
+        typedef typename lanesOfWidth<decltype(width)::value>::type Lanes;
+        this->template solveLanes<Lanes>
         (
             rodLength, tolerance, maxIterations, iterations
         );
-    }
-    else
-    {
-        solveLanes<newtonLaneKernels::fourLanes>
-        (
-            rodLength, tolerance, maxIterations, iterations
-        );
-    }
+    });
 }
 
 
@@ -808,14 +830,11 @@ void Foam::polymer::newtonLanes::projectVelocities
     scalar largest[]
 )
 {
-    if (nLanes_ == 8)
+    atWidth(nLanes_, [&](auto width)
     {
-        projectLanes<newtonLaneKernels::eightLanes>(solved, largest);
-    }
-    else
-    {
-        projectLanes<newtonLaneKernels::fourLanes>(solved, largest);
-    }
+        typedef typename lanesOfWidth<decltype(width)::value>::type Lanes;
+        this->template projectLanes<Lanes>(solved, largest);
+    });
 }
 
 
@@ -826,14 +845,10 @@ void Foam::polymer::newtonLanes::storeVelocities
 ) const
 {
     const double* lane = values(velocities_) + lanei;
-    if (nLanes_ == 8)
+    atWidth(nLanes_, [&](auto width)
     {
-        laneVectors<8>(nBeads_, lane, v);
-    }
-    else
-    {
-        laneVectors<4>(nBeads_, lane, v);
-    }
+        laneVectors<decltype(width)::value>(nBeads_, lane, v);
+    });
 }
 
 
@@ -846,14 +861,11 @@ void Foam::polymer::newtonLanes::store
 ) const
 {
     const double* lane = values(converged_) + lanei;
-    if (nLanes_ == 8)
+    atWidth(nLanes_, [&](auto width)
     {
-        storeLane<8>(nBeads_, lane, x, v, oneByDeltaT);
-    }
-    else
-    {
-        storeLane<4>(nBeads_, lane, x, v, oneByDeltaT);
-    }
+        constexpr label N = decltype(width)::value;
+        storeLane<N>(nBeads_, lane, x, v, oneByDeltaT);
+    });
 }
 
 
