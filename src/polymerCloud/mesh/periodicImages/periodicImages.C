@@ -213,12 +213,6 @@ Foam::polymer::periodicImages::periodicImages(const polyMesh& mesh)
 
 // * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
-Foam::vector Foam::polymer::periodicImages::shift(const point& p) const
-{
-    return unshifted_.contains(p) ? Zero : shiftByPlanes(p);
-}
-
-
 Foam::vector Foam::polymer::periodicImages::shiftByPlanes(const point& p) const
 {
     // A point beyond several planes (a corner) needs a pass per plane; a
