@@ -139,20 +139,38 @@ void Foam::polymer::chainStepper::checkFinite(const char* when) const
 }
 
 
-void Foam::polymer::chainStepper::recordUnconstrained()
+void Foam::polymer::chainStepper::startChain(const label c)
 {
-    if (!coupling_.twoWay())
+    const label first = chains_.start(c);
+    const label n = chains_.size(c);
+    if
+    (
+        !copyAllFinite
+        (
+            SubList<vector>(chains_.positions(), n, first),
+            positionsOld_.data() + first
+        )
+     || !copyAllFinite
+        (
+            SubList<vector>(chains_.velocities(), n, first),
+            velocitiesOld_.data() + first
+        )
+    )
     {
-        return;
+        checkFinite("at the start of the step to time");
     }
+}
 
+
+void Foam::polymer::chainStepper::recordUnconstrained(const label c)
+{
+    const List<vector>& x = chains_.positions();
     const List<vector>& v = chains_.velocities();
-    velocityChange_.resize(v.size());
-    forAll(v, i)
+    for (label i = chains_.start(c); i < chains_.end(c); ++i)
     {
         velocityChange_[i] = v[i] - velocitiesOld_[i];
+        positionsStar_[i] = x[i];
     }
-    positionsStar_ = chains_.positions();
 }
 
 
@@ -391,21 +409,6 @@ void Foam::polymer::chainStepper::writeSubCycleReport(Ostream& os) const
 }
 
 
-void Foam::polymer::chainStepper::start()
-{
-    // What the last step made is checked as it is copied: a NaN or inf
-    // stops the run before the step uses it
-    if
-    (
-        !copyAllFinite(chains_.positions(), positionsOld_)
-     || !copyAllFinite(chains_.velocities(), velocitiesOld_)
-    )
-    {
-        checkFinite("at the start of the step to time");
-    }
-}
-
-
 void Foam::polymer::chainStepper::prepareDrift()
 {
     flow_.prepare(chains_);
@@ -465,16 +468,37 @@ void Foam::polymer::chainStepper::countBeadsOutside()
 
 void Foam::polymer::chainStepper::integrate(const scalar deltaT)
 {
-    integration_.integrate
-    (
-        chains_,
-        drift(),
-        deltaT,
-        time_.timeIndex(),
-        seed_,
-        cycleKey_
-    );
-    recordUnconstrained();
+    // A chain's start copied, its update and its record while its beads
+    // are in the cache: separate passes over all beads would read them
+    // from memory three times
+    const label nBeads = chains_.nBeads();
+    positionsOld_.resize(nBeads);
+    velocitiesOld_.resize(nBeads);
+    const bool twoWay = coupling_.twoWay();
+    if (twoWay)
+    {
+        velocityChange_.resize(nBeads);
+        positionsStar_.resize(nBeads);
+    }
+    const UList<vector>& driftVelocity = drift();
+    for (label c = 0; c < chains_.nChains(); ++c)
+    {
+        startChain(c);
+        integration_.integrateChain
+        (
+            chains_,
+            c,
+            driftVelocity,
+            deltaT,
+            time_.timeIndex(),
+            seed_,
+            cycleKey_
+        );
+        if (twoWay)
+        {
+            recordUnconstrained(c);
+        }
+    }
 
     if (!displacementReported_)
     {

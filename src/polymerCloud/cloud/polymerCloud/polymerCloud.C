@@ -385,10 +385,6 @@ void Foam::polymer::polymerCloud::evolvePolymerStep
 
 void Foam::polymer::polymerCloud::updateDrift()
 {
-    // The copy of the step's starting state (checked finite) is the
-    // integration's: with no flow it is not the flow's cost
-    stepper_->start();
-    pathTimes_.lap(pathTimes::integrate);
     stepper_->prepareDrift();
     pathTimes_.lap(pathTimes::interpolate);
     stepper_->updateDrift();
@@ -506,7 +502,6 @@ void Foam::polymer::polymerCloud::predictCoupling()
     // Steps 1 and 2 in the flow of the step's start, with the same noise
     // as the step proper (keyed by the time index), so the predictor
     // differs from it by the flow only; the chains then return to x^n
-    stepper_->start();
     stepper_->updateDrift();
     flow_->storePredictor();
     stepper_->integrate(deltaT);
