@@ -411,10 +411,21 @@ Foam::tetIndices Foam::polymer::cellLocator::search
         }
     }
 
-    // The tree gives the cell; its tet is searched again (rare: a first
-    // search, or a walk that stopped short)
+    // The tree gives the cell (rare: a first search, a walk that stopped
+    // short) and, from its inside test, the tet: the one inTets finds in
+    // the cell's order, unless it was given a tet of that cell to try
+    // first
     const label celli = findCell(p);
-    if (celli < 0 || !inTets(mesh(), p, celli, tet, place))
+    if (celli < 0)
+    {
+        return tetIndices();
+    }
+    if (tet.cell() != celli)
+    {
+        place = tree().shapes().foundPlace();
+        return tree().shapes().foundTet();
+    }
+    if (!inTets(mesh(), p, celli, tet, place))
     {
         return tetIndices();
     }
