@@ -14,7 +14,7 @@ License
 #include "UIListStream.H"
 #include "allReduce.H"
 #include "clockTime.H"
-#include "volPointInterpolation.H"
+#include "flatVolPointInterpolation.H"
 
 #include <algorithm>
 #include <cmath>
@@ -741,7 +741,7 @@ Foam::tmp<Foam::pointVectorField> Foam::polymer::beadSampler::pointValues
     const volVectorField& cellValues
 )
 {
-    return volPointInterpolation::New(cellValues.mesh()).interpolate
+    return flatVolPointInterpolation::New(cellValues.mesh()).interpolate
     (
         cellValues,
         "volPointInterpolate(" + cellValues.name() + ')',

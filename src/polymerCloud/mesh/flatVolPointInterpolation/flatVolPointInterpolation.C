@@ -1,0 +1,307 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | polymerCloud: bead-rod chains in OpenFOAM flows
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of polymerCloud, an extension of OpenFOAM (GPL v3+).
+
+\*---------------------------------------------------------------------------*/
+
+#include "flatVolPointInterpolation.H"
+#include "surfaceFields.H"
+#include "emptyPolyPatch.H"
+#include "emptyPointPatch.H"
+#include "pointConstraints.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace polymer
+{
+    defineTypeNameAndDebug(flatVolPointInterpolation, 0);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::polymer::flatVolPointInterpolation::interpolatesFromFaces
+(
+    const label patchi
+) const
+{
+    // volPointInterpolation's test: coupled() of the face areas' patch
+    // field, which knows whether a cyclicAMI patch couples
+    return
+        !isA<emptyPolyPatch>(mesh().boundaryMesh()[patchi])
+     && !mesh().magSf().boundaryField()[patchi].coupled();
+}
+
+
+void Foam::polymer::flatVolPointInterpolation::makePatchPointFaces()
+{
+    const polyBoundaryMesh& patches = mesh().boundaryMesh();
+    const label nPoints = mesh().nPoints();
+
+    // Each point of each patch face, faces in the boundary's order
+    const auto forEachPatchFacePoint = [&](const auto& visit)
+    {
+        forAll(patches, patchi)
+        {
+            if (interpolatesFromFaces(patchi))
+            {
+                const polyPatch& patch = patches[patchi];
+                const label start = patch.start() - mesh().nInternalFaces();
+                forAll(patch, i)
+                {
+                    for (const label pointi : patch[i])
+                    {
+                        visit(pointi, start + i);
+                    }
+                }
+            }
+        }
+    };
+
+    labelList nPointFaces(nPoints, Zero);
+    forEachPatchFacePoint
+    (
+        [&nPointFaces](const label pointi, const label)
+        {
+            ++nPointFaces[pointi];
+        }
+    );
+    isPatchPoint_.setSize(nPoints);
+    labelList patchPointi(nPoints, -1);
+    DynamicList<label> patchPoints(nPoints);
+    forAll(nPointFaces, pointi)
+    {
+        isPatchPoint_[pointi] = nPointFaces[pointi] > 0;
+        if (isPatchPoint_[pointi])
+        {
+            patchPointi[pointi] = patchPoints.size();
+            patchPoints.append(pointi);
+        }
+    }
+    patchPoints_.transfer(patchPoints);
+
+    // Each patch point's faces in ascending order, as primitivePatch's
+    // pointFaces lists them
+    patchPointFaces_.setSize
+    (
+        labelList(UIndirectList<label>(nPointFaces, patchPoints_))
+    );
+    labelList nFilled(patchPoints_.size(), Zero);
+    forEachPatchFacePoint
+    (
+        [this, &patchPointi, &nFilled](const label pointi, const label bFacei)
+        {
+            const label i = patchPointi[pointi];
+            patchPointFaces_[i][nFilled[i]++] = bFacei;
+        }
+    );
+}
+
+
+void Foam::polymer::flatVolPointInterpolation::makePointCells()
+{
+    const cellList& cells = mesh().cells();
+    const faceList& faces = mesh().faces();
+    const label nPoints = mesh().nPoints();
+
+    // Each cell's points other than patch points, each once for the cell by
+    // the mark of the last cell that visited it; cells in order, so that
+    // each point's cells are listed as primitiveMesh::pointCells lists them
+    labelList lastCell(nPoints);
+    const auto forEachCellPoint = [&](const auto& visit)
+    {
+        lastCell = -1;
+        forAll(cells, celli)
+        {
+            for (const label facei : cells[celli])
+            {
+                for (const label pointi : faces[facei])
+                {
+                    if (lastCell[pointi] != celli && !isPatchPoint_[pointi])
+                    {
+                        visit(pointi, celli);
+                    }
+                    lastCell[pointi] = celli;
+                }
+            }
+        }
+    };
+
+    labelList nPointCells(nPoints, Zero);
+    forEachCellPoint
+    (
+        [&nPointCells](const label pointi, const label)
+        {
+            ++nPointCells[pointi];
+        }
+    );
+    pointCells_.setSize(nPointCells);
+    nPointCells = 0;
+    forEachCellPoint
+    (
+        [this, &nPointCells](const label pointi, const label celli)
+        {
+            pointCells_[pointi][nPointCells[pointi]++] = celli;
+        }
+    );
+}
+
+
+void Foam::polymer::flatVolPointInterpolation::addInverseDistances
+(
+    scalarField& sumWeight
+)
+{
+    const pointField& points = mesh().points();
+    const vectorField& cellCentres = mesh().cellCentres();
+    const vectorField& faceCentres = mesh().faceCentres();
+
+    // Added to the sums in volPointInterpolation's order
+    const labelList& cellStart = pointCells_.offsets();
+    const labelList& cellOf = pointCells_.m();
+    pointCellWeights_.setSize(cellOf.size());
+    forAll(isPatchPoint_, pointi)
+    {
+        for (label k = cellStart[pointi]; k < cellStart[pointi + 1]; ++k)
+        {
+            pointCellWeights_[k] =
+                1.0/mag(points[pointi] - cellCentres[cellOf[k]]);
+            sumWeight[pointi] += pointCellWeights_[k];
+        }
+    }
+    const labelList& faceStart = patchPointFaces_.offsets();
+    const labelList& faceOf = patchPointFaces_.m();
+    patchPointFaceWeights_.setSize(faceOf.size());
+    forAll(patchPoints_, i)
+    {
+        const label pointi = patchPoints_[i];
+        for (label k = faceStart[i]; k < faceStart[i + 1]; ++k)
+        {
+            const label facei = mesh().nInternalFaces() + faceOf[k];
+            patchPointFaceWeights_[k] =
+                1.0/mag(points[pointi] - faceCentres[facei]);
+            sumWeight[pointi] += patchPointFaceWeights_[k];
+        }
+    }
+}
+
+
+void Foam::polymer::flatVolPointInterpolation::normaliseWeights
+(
+    const scalarField& sumWeight
+)
+{
+    const labelList& cellStart = pointCells_.offsets();
+    forAll(isPatchPoint_, pointi)
+    {
+        for (label k = cellStart[pointi]; k < cellStart[pointi + 1]; ++k)
+        {
+            pointCellWeights_[k] /= sumWeight[pointi];
+        }
+    }
+    const labelList& faceStart = patchPointFaces_.offsets();
+    forAll(patchPoints_, i)
+    {
+        for (label k = faceStart[i]; k < faceStart[i + 1]; ++k)
+        {
+            patchPointFaceWeights_[k] /= sumWeight[patchPoints_[i]];
+        }
+    }
+}
+
+
+bool Foam::polymer::flatVolPointInterpolation::constrainsPoints() const
+{
+    const pointBoundaryMesh& pointPatches = pointMesh::New(mesh()).boundary();
+    const polyBoundaryMesh& patches = mesh().boundaryMesh();
+    bool constrains = false;
+    forAll(pointPatches, patchi)
+    {
+        const pointPatch& pointPatch = pointPatches[patchi];
+        if (!isA<emptyPointPatch>(pointPatch) && !pointPatch.coupled())
+        {
+            for (const label pointi : patches[patchi].boundaryPoints())
+            {
+                pointConstraint constraint;
+                pointPatch.applyConstraint(pointi, constraint);
+                constrains = constrains || constraint.first() != 0;
+            }
+        }
+    }
+    return returnReduce(constrains, orOp<bool>());
+}
+
+
+void Foam::polymer::flatVolPointInterpolation::makeWeights()
+{
+    hasConstrainedPoints_ = constrainsPoints();
+
+    makePatchPointFaces();
+    makePointCells();
+
+    pointScalarField sumWeights
+    (
+        IOobject
+        (
+            "flatVolPointSumWeights",
+            mesh().polyMesh::instance(),
+            mesh()
+        ),
+        pointMesh::New(mesh()),
+        dimensionedScalar(dimless, Zero)
+    );
+    addInverseDistances(sumWeights.primitiveFieldRef());
+
+    // The sums over coupled points, as volPointInterpolation::makeWeights
+    pointConstraints::syncUntransformedData
+    (
+        mesh(),
+        sumWeights.primitiveFieldRef(),
+        plusEqOp<scalar>()
+    );
+    addSeparated(sumWeights);
+    pushUntransformedData(sumWeights.primitiveFieldRef());
+
+    normaliseWeights(sumWeights);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::polymer::flatVolPointInterpolation::flatVolPointInterpolation
+(
+    const fvMesh& mesh
+)
+:
+    MeshObject<fvMesh, UpdateableMeshObject, flatVolPointInterpolation>(mesh),
+    hasConstrainedPoints_(false)
+{
+    makeWeights();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::polymer::flatVolPointInterpolation::movePoints()
+{
+    makeWeights();
+    return true;
+}
+
+
+void Foam::polymer::flatVolPointInterpolation::updateMesh(const mapPolyMesh&)
+{
+    makeWeights();
+}
+
+
+// ************************************************************************* //
