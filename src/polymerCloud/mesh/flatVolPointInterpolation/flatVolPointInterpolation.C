@@ -113,46 +113,36 @@ void Foam::polymer::flatVolPointInterpolation::makePointCells()
     const faceList& faces = mesh().faces();
     const label nPoints = mesh().nPoints();
 
-    // Each cell's points other than patch points, each once for the cell by
-    // the mark of the last cell that visited it; cells in order, so that
-    // each point's cells are listed as primitiveMesh::pointCells lists them
-    labelList lastCell(nPoints);
-    const auto forEachCellPoint = [&](const auto& visit)
+    // Each cell's points other than patch points, each taken once for the
+    // cell by the mark of the last cell that took it, in one pass over the
+    // cells; in the cells' order, so that the lists filled from it in that
+    // order hold each point's cells as primitiveMesh::pointCells does
+    labelList lastCell(nPoints, -1);
+    labelList nPointCells(nPoints, Zero);
+    DynamicList<labelPair> pointCell(8*nPoints);
+    forAll(cells, celli)
     {
-        lastCell = -1;
-        forAll(cells, celli)
+        for (const label facei : cells[celli])
         {
-            for (const label facei : cells[celli])
+            for (const label pointi : faces[facei])
             {
-                for (const label pointi : faces[facei])
+                if (lastCell[pointi] != celli && !isPatchPoint_[pointi])
                 {
-                    if (lastCell[pointi] != celli && !isPatchPoint_[pointi])
-                    {
-                        visit(pointi, celli);
-                    }
-                    lastCell[pointi] = celli;
+                    ++nPointCells[pointi];
+                    pointCell.append(labelPair(pointi, celli));
                 }
+                lastCell[pointi] = celli;
             }
         }
-    };
+    }
 
-    labelList nPointCells(nPoints, Zero);
-    forEachCellPoint
-    (
-        [&nPointCells](const label pointi, const label)
-        {
-            ++nPointCells[pointi];
-        }
-    );
     pointCells_.setSize(nPointCells);
-    nPointCells = 0;
-    forEachCellPoint
-    (
-        [this, &nPointCells](const label pointi, const label celli)
-        {
-            pointCells_[pointi][nPointCells[pointi]++] = celli;
-        }
-    );
+    labelList next(SubList<label>(pointCells_.offsets(), nPoints));
+    labelList& cellOf = pointCells_.m();
+    for (const labelPair& pc : pointCell)
+    {
+        cellOf[next[pc.first()]++] = pc.second();
+    }
 }
 
 
