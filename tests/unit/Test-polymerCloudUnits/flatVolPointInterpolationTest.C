@@ -214,18 +214,15 @@ TEST(flatVolPointInterpolation, GivesTheSameBitsAfterThePointsMoved)
     {
         // The shared mesh made the case; this test moves a mesh of its own
         ASSERT_TRUE(meshOf(caseName));
-        const fileName runDir(getEnv("POLYMERCLOUD_PROJECT")/"tests/logs/run");
-        Time runTime(Time::controlDictName, runDir, "unit." + caseName);
-        fvMesh mesh
+        const std::unique_ptr<caseMesh> own
         (
-            IOobject
+            readCaseMesh
             (
-                fvMesh::defaultRegion,
-                runTime.timeName(),
-                runTime,
-                IOobject::MUST_READ
+                getEnv("POLYMERCLOUD_PROJECT") + "/tests/logs/run",
+                caseName
             )
         );
+        fvMesh& mesh = *own->mesh;
         expectSamePointValues(mesh, caseName);
         moveInteriorPoints(mesh, 0.3);
         expectSamePointValues(mesh, caseName + " moved");
