@@ -20,7 +20,10 @@ Description
     meet at an oblique edge whose points pointConstraints constrains to
     the edge's direction; a test checks that these constraints change
     values the boundary conditions gave),
-    compared component by component; then the same after the interior
+    compared component by component; that OpenFOAM's synchronisation of
+    the collocated coupled points, which the class leaves out in a serial
+    run whose cyclic patches are translated, changes nothing there (a sum
+    over them of random values); then the same after the interior
     points were moved at random by up to 0.3 cells (irregular weights;
     both made again by the mesh's movePoints), on a mesh of its own read
     from the same case.
@@ -201,6 +204,40 @@ TEST(flatVolPointInterpolation, MeetsPointConstraintsInTheSymmetryScene)
         nConstrained += (conditionsAlone[pointi] != constrained()[pointi]);
     }
     EXPECT_GT(nConstrained, 0);
+}
+
+
+TEST(flatVolPointInterpolation, TranslatedCyclicsHaveNoCollocatedPoints)
+{
+    // pointConstraints::syncUntransformedData sums nothing in a serial
+    // mesh whose cyclic patches are translated: what is left out changes
+    // no value
+    for (const word caseName : {"periodicChannel", "symmetryChannel"})
+    {
+        const fvMesh* mesh = meshOf(caseName);
+        ASSERT_TRUE(mesh);
+        std::mt19937_64 generator(1205);
+        std::uniform_real_distribution<scalar> uniform(-1, 1);
+        scalarField values(mesh->nPoints());
+        for (scalar& value : values)
+        {
+            value = uniform(generator);
+        }
+        scalarField synchronised(values);
+        pointConstraints::syncUntransformedData
+        (
+            *mesh,
+            synchronised,
+            plusEqOp<scalar>()
+        );
+        label nChanged = 0;
+        forAll(values, pointi)
+        {
+            nChanged += (synchronised[pointi] != values[pointi]);
+        }
+        EXPECT_EQ(nChanged, 0) << caseName;
+        EXPECT_GT(mesh->globalData().coupledPatch().nPoints(), 0) << caseName;
+    }
 }
 
 

@@ -14,6 +14,7 @@ License
 #include "surfaceFields.H"
 #include "emptyPolyPatch.H"
 #include "emptyPointPatch.H"
+#include "cyclicPolyPatch.H"
 #include "pointConstraints.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -231,9 +232,31 @@ bool Foam::polymer::flatVolPointInterpolation::constrainsPoints() const
 }
 
 
+bool Foam::polymer::flatVolPointInterpolation::collocatesPoints() const
+{
+    if (Pstream::parRun())
+    {
+        return true;
+    }
+    for (const polyPatch& patch : mesh().boundaryMesh())
+    {
+        const cyclicPolyPatch* cyclic =
+            dynamic_cast<const cyclicPolyPatch*>(&patch);
+        const bool translated =
+            cyclic && cyclic->separated() && cyclic->parallel();
+        if (patch.coupled() && !translated)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
 void Foam::polymer::flatVolPointInterpolation::makeWeights()
 {
     hasConstrainedPoints_ = constrainsPoints();
+    hasCollocatedPoints_ = collocatesPoints();
 
     makePatchPointFaces();
     makePointCells();
@@ -252,12 +275,7 @@ void Foam::polymer::flatVolPointInterpolation::makeWeights()
     addInverseDistances(sumWeights.primitiveFieldRef());
 
     // The sums over coupled points, as volPointInterpolation::makeWeights
-    pointConstraints::syncUntransformedData
-    (
-        mesh(),
-        sumWeights.primitiveFieldRef(),
-        plusEqOp<scalar>()
-    );
+    syncCollocated(sumWeights.primitiveFieldRef(), plusEqOp<scalar>());
     addSeparated(sumWeights);
     pushUntransformedData(sumWeights.primitiveFieldRef());
 
@@ -273,7 +291,8 @@ Foam::polymer::flatVolPointInterpolation::flatVolPointInterpolation
 )
 :
     MeshObject<fvMesh, UpdateableMeshObject, flatVolPointInterpolation>(mesh),
-    hasConstrainedPoints_(false)
+    hasConstrainedPoints_(false),
+    hasCollocatedPoints_(true)
 {
     makeWeights();
 }

@@ -18,6 +18,20 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+template<class Type, class CombineOp>
+void Foam::polymer::flatVolPointInterpolation::syncCollocated
+(
+    List<Type>& pointData,
+    const CombineOp& cop
+) const
+{
+    if (hasCollocatedPoints_)
+    {
+        pointConstraints::syncUntransformedData(mesh(), pointData, cop);
+    }
+}
+
+
 template<class Type>
 void Foam::polymer::flatVolPointInterpolation::pushUntransformedData
 (
@@ -26,6 +40,10 @@ void Foam::polymer::flatVolPointInterpolation::pushUntransformedData
 {
     // volPointInterpolation's: through the coupled patch, each master's
     // value copied to its slaves' slots and sent back to them
+    if (!hasCollocatedPoints_)
+    {
+        return;
+    }
     const globalMeshData& gmd = mesh().globalData();
     const labelList& meshPoints = gmd.coupledPatch().meshPoints();
     const mapDistribute& slavesMap = gmd.globalCoPointSlavesMap();
@@ -145,7 +163,7 @@ void Foam::polymer::flatVolPointInterpolation::interpolateBoundaryField
         pfi[patchPoints_[i]] = value;
     }
 
-    pointConstraints::syncUntransformedData(mesh(), pfi, plusEqOp<Type>());
+    syncCollocated(pfi, plusEqOp<Type>());
     addSeparated(pf);
     pushUntransformedData(pfi);
 }
@@ -166,12 +184,7 @@ void Foam::polymer::flatVolPointInterpolation::constrain
     // pointConstraints::constrain with no constrained points and no fixed
     // values overridden
     pf.correctBoundaryConditions();
-    pointConstraints::syncUntransformedData
-    (
-        mesh(),
-        pf.primitiveFieldRef(),
-        maxMagSqrEqOp<Type>()
-    );
+    syncCollocated(pf.primitiveFieldRef(), maxMagSqrEqOp<Type>());
 }
 
 
