@@ -28,6 +28,34 @@ namespace polymer
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Rows of the given sizes, filled with the entries' values (second) in
+// the entries' order, each in its row (first)
+Foam::CompactListList<Foam::label> compactRows
+(
+    const Foam::labelUList& rowSizes,
+    const Foam::UList<Foam::labelPair>& entries
+)
+{
+    using namespace Foam;
+
+    CompactListList<label> rows(rowSizes);
+    labelList next(SubList<label>(rows.offsets(), rowSizes.size()));
+    labelList& values = rows.m();
+    for (const labelPair& entry : entries)
+    {
+        values[next[entry.first()]++] = entry.second();
+    }
+    return rows;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 bool Foam::polymer::flatVolPointInterpolation::interpolatesFromFaces
@@ -48,34 +76,27 @@ void Foam::polymer::flatVolPointInterpolation::makePatchPointFaces()
     const polyBoundaryMesh& patches = mesh().boundaryMesh();
     const label nPoints = mesh().nPoints();
 
-    // Each point of each patch face, faces in the boundary's order
-    const auto forEachPatchFacePoint = [&](const auto& visit)
+    // Each point of each patch face, faces in the boundary's order, so
+    // that each point's faces are listed as primitivePatch's pointFaces
+    labelList nPointFaces(nPoints, Zero);
+    DynamicList<labelPair> pointFace(nPoints);
+    forAll(patches, patchi)
     {
-        forAll(patches, patchi)
+        if (interpolatesFromFaces(patchi))
         {
-            if (interpolatesFromFaces(patchi))
+            const polyPatch& patch = patches[patchi];
+            const label start = patch.start() - mesh().nInternalFaces();
+            forAll(patch, i)
             {
-                const polyPatch& patch = patches[patchi];
-                const label start = patch.start() - mesh().nInternalFaces();
-                forAll(patch, i)
+                for (const label pointi : patch[i])
                 {
-                    for (const label pointi : patch[i])
-                    {
-                        visit(pointi, start + i);
-                    }
+                    ++nPointFaces[pointi];
+                    pointFace.append(labelPair(pointi, start + i));
                 }
             }
         }
-    };
+    }
 
-    labelList nPointFaces(nPoints, Zero);
-    forEachPatchFacePoint
-    (
-        [&nPointFaces](const label pointi, const label)
-        {
-            ++nPointFaces[pointi];
-        }
-    );
     isPatchPoint_.setSize(nPoints);
     labelList patchPointi(nPoints, -1);
     DynamicList<label> patchPoints(nPoints);
@@ -90,20 +111,14 @@ void Foam::polymer::flatVolPointInterpolation::makePatchPointFaces()
     }
     patchPoints_.transfer(patchPoints);
 
-    // Each patch point's faces in ascending order, as primitivePatch's
-    // pointFaces lists them
-    patchPointFaces_.setSize
+    for (labelPair& pf : pointFace)
+    {
+        pf.first() = patchPointi[pf.first()];
+    }
+    patchPointFaces_ = compactRows
     (
-        labelList(UIndirectList<label>(nPointFaces, patchPoints_))
-    );
-    labelList nFilled(patchPoints_.size(), Zero);
-    forEachPatchFacePoint
-    (
-        [this, &patchPointi, &nFilled](const label pointi, const label bFacei)
-        {
-            const label i = patchPointi[pointi];
-            patchPointFaces_[i][nFilled[i]++] = bFacei;
-        }
+        labelList(UIndirectList<label>(nPointFaces, patchPoints_)),
+        pointFace
     );
 }
 
@@ -116,8 +131,8 @@ void Foam::polymer::flatVolPointInterpolation::makePointCells()
 
     // Each cell's points other than patch points, each taken once for the
     // cell by the mark of the last cell that took it, in one pass over the
-    // cells; in the cells' order, so that the lists filled from it in that
-    // order hold each point's cells as primitiveMesh::pointCells does
+    // cells; in the cells' order, so that each point's cells are listed as
+    // primitiveMesh::pointCells lists them
     labelList lastCell(nPoints, -1);
     labelList nPointCells(nPoints, Zero);
     DynamicList<labelPair> pointCell(8*nPoints);
@@ -136,14 +151,7 @@ void Foam::polymer::flatVolPointInterpolation::makePointCells()
             }
         }
     }
-
-    pointCells_.setSize(nPointCells);
-    labelList next(SubList<label>(pointCells_.offsets(), nPoints));
-    labelList& cellOf = pointCells_.m();
-    for (const labelPair& pc : pointCell)
-    {
-        cellOf[next[pc.first()]++] = pc.second();
-    }
+    pointCells_ = compactRows(nPointCells, pointCell);
 }
 
 
